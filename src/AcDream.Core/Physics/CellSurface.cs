@@ -1,0 +1,310 @@
+using System.Numerics;
+using AcDream.Core.Dat;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Indoor floor of one EnvCell, in landblock-local metres (the frame <c>EnvCell.Position</c> is
+/// expressed in; a cell's geometry may reach past 0..192, as Holtburg's cellar does).
+/// </summary>
+/// <remarks>
+/// At construction the cell's physics polygons are moved from cell-local to landblock-local space
+/// (<c>Origin + Vector3.Transform(v, Orientation)</c>, the orientation normalised), the floors are
+/// kept (winding normal Z ≥ <see cref="PhysicsConstants.FloorZ"/>; walls and ceilings never are) and
+/// fan-triangulated, and the portals are prepared for crossing tests. Queries are arithmetic only and
+/// allocate nothing. Instances are immutable and safe to share between threads.
+/// </remarks>
+public sealed class CellSurface
+{
+    private readonly FloorTriangle[] _floors;
+    private readonly PortalShape[] _portalShapes;
+
+    /// <summary>The EnvCell's dat id (e.g., 0xA9B40100).</summary>
+    public uint CellId { get; }
+
+    /// <summary>The cell's world-space origin (from EnvCell.Position.Origin).</summary>
+    /// <remarks>Landblock-local metres, as stored in the dat; the engine adds the landblock's offset.</remarks>
+    public Vector3 Origin { get; }
+
+    /// <summary>Portal connections to adjacent cells.</summary>
+    /// <remarks>In the order of <c>EnvCell.CellPortals</c>; geometry in landblock-local metres.</remarks>
+    public IReadOnlyList<CellPortalInfo> Portals { get; }
+
+    /// <summary>
+    /// Prepares the floors and portals of one EnvCell.
+    /// </summary>
+    /// <param name="cellId">Full cell id, <c>0xXXYYCCCC</c> with <c>CCCC</c> in 0x0100..0xFFFD. If <c>envCell.Id</c> is set (non-zero) it must be the same.</param>
+    /// <param name="envCell">The cell: its <c>Position</c> places the geometry, its <c>CellPortals</c> give the portals.</param>
+    /// <param name="cellStruct">The cell's shape: <c>PhysicsPolygons</c> give the floors, <c>Polygons</c> the portal polygons.</param>
+    /// <exception cref="ArgumentNullException">An argument, or a list inside them, is null.</exception>
+    /// <exception cref="ArgumentException">
+    /// The id is not an indoor cell id or disagrees with <c>envCell.Id</c>; the position is not finite
+    /// or its orientation is zero; a polygon has fewer than three vertices, names an unknown vertex, or
+    /// has a non-finite vertex; a portal names a polygon that <c>Polygons</c> lacks. The message names
+    /// the cell, the polygon or portal, and what is wrong.
+    /// </exception>
+    public CellSurface(uint cellId, EnvCell envCell, CellStruct cellStruct)
+    {
+        ArgumentNullException.ThrowIfNull(envCell);
+        ArgumentNullException.ThrowIfNull(cellStruct);
+        string cell = $"cell 0x{cellId:X8}";
+        if (!CellIds.IsIndoor(cellId))
+        {
+            throw new ArgumentException($"{cell}: not an indoor cell id; the low 16 bits must be 0x0100..0xFFFD.", nameof(cellId));
+        }
+
+        if (envCell.Id != 0 && envCell.Id != cellId)
+        {
+            throw new ArgumentException($"{cell}: envCell.Id is 0x{envCell.Id:X8}, a different cell.", nameof(envCell));
+        }
+
+        Frame position = envCell.Position ?? throw new ArgumentNullException(nameof(envCell), $"{cell}: envCell.Position is null.");
+        Vector3 origin = position.Origin;
+        Quaternion orientation = position.Orientation;
+        if (!IsFinite(origin))
+        {
+            throw new ArgumentException($"{cell}: Position.Origin {origin} is not finite.", nameof(envCell));
+        }
+
+        if (!float.IsFinite(orientation.X) || !float.IsFinite(orientation.Y) || !float.IsFinite(orientation.Z) || !float.IsFinite(orientation.W)
+            || orientation.LengthSquared() < 1e-12f)
+        {
+            throw new ArgumentException($"{cell}: Position.Orientation {orientation} is not a rotation (non-finite or zero).", nameof(envCell));
+        }
+
+        CellId = cellId;
+        Origin = origin;
+        var transform = new CellTransform(cell, cellStruct, origin, Quaternion.Normalize(orientation));
+
+        _floors = BuildFloors(cell, cellStruct, transform);
+        (Portals, _portalShapes) = BuildPortals(cell, cellId, envCell, cellStruct, transform);
+
+        if (_floors.Length > 0)
+        {
+            Vector2 min = _floors[0].Min, max = _floors[0].Max;
+            foreach (FloorTriangle t in _floors)
+            {
+                min = Vector2.Min(min, t.Min);
+                max = Vector2.Max(max, t.Max);
+            }
+
+            FloorMin = min;
+            FloorMax = max;
+        }
+        else
+        {
+            // An empty box that contains nothing.
+            FloorMin = new Vector2(float.MaxValue);
+            FloorMax = new Vector2(float.MinValue);
+        }
+    }
+
+    /// <summary>Whether the cell has any walkable floor (a stairwell shaft has none).</summary>
+    internal bool HasFloor => _floors.Length > 0;
+
+    /// <summary>Number of floor triangles after fan triangulation.</summary>
+    internal int FloorTriangleCount => _floors.Length;
+
+    /// <summary>Landblock-local XY bounds of the floor, grown by the edge tolerance; empty when there is no floor.</summary>
+    internal Vector2 FloorMin { get; }
+
+    internal Vector2 FloorMax { get; }
+
+    /// <summary>Prepared portal geometry, aligned with <see cref="Portals"/>.</summary>
+    internal ReadOnlySpan<PortalShape> PortalShapes => _portalShapes;
+
+    /// <summary>
+    /// Project (worldX, worldY) onto this cell's floor polygons and
+    /// return the Z height at that point. Returns null if the XY
+    /// doesn't fall within any floor polygon (the entity isn't over
+    /// this cell's floor).
+    ///
+    /// <para>
+    /// Uses PhysicsPolygons (not rendering Polygons) — these define
+    /// the walkable surfaces. For each polygon, does a point-in-
+    /// triangle test (after fan triangulation) + barycentric Z
+    /// interpolation. Brute-force iteration over all polygons;
+    /// cell polygon counts are small (typically &lt; 20) so BSP
+    /// acceleration is deferred.
+    /// </para>
+    /// </summary>
+    /// <remarks>
+    /// Coordinates and the result are landblock-local metres. Where floors are stacked, the topmost
+    /// one under the point wins, whatever the polygon order. A point on an edge or vertex, or within
+    /// <see cref="PhysicsConstants.EdgeTolerance"/> of one, is on the floor.
+    /// </remarks>
+    /// <exception cref="ArgumentException">A coordinate is NaN or infinite.</exception>
+    public float? SampleFloorZ(float worldX, float worldY)
+    {
+        ThrowIfNotFinite(worldX, worldY, 0f);
+        return TrySampleFloor(worldX, worldY, float.PositiveInfinity, out float z) ? z : null;
+    }
+
+    /// <summary>
+    /// Like <see cref="SampleFloorZ(float, float)"/>, but where floors are stacked (a cellar under a
+    /// ground floor, an upper storey) returns the floor whose Z is nearest to
+    /// <paramref name="referenceZ"/>; on an exact tie, the higher one.
+    /// </summary>
+    /// <param name="worldX">Landblock-local X, metres.</param>
+    /// <param name="worldY">Landblock-local Y, metres.</param>
+    /// <param name="referenceZ">Landblock-local Z to compare with, metres (typically the mover's feet).</param>
+    /// <returns>The floor Z in metres, or null when no floor lies under (x, y).</returns>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite.</exception>
+    public float? SampleFloorZ(float worldX, float worldY, float referenceZ)
+    {
+        ThrowIfNotFinite(worldX, worldY, referenceZ);
+        return TrySampleFloor(worldX, worldY, referenceZ, out float z) ? z : null;
+    }
+
+    /// <summary>
+    /// The engine's query: the floor under (x, y) nearest to <paramref name="referenceZ"/>
+    /// (positive infinity: the topmost). Arguments must be finite or +∞ for the reference.
+    /// </summary>
+    internal bool TrySampleFloor(float x, float y, float referenceZ, out float z)
+    {
+        z = 0f;
+        if (x < FloorMin.X || y < FloorMin.Y || x > FloorMax.X || y > FloorMax.Y)
+        {
+            return false;
+        }
+
+        bool found = false;
+        float bestDistance = float.PositiveInfinity;
+        foreach (ref readonly FloorTriangle triangle in _floors.AsSpan())
+        {
+            if (!triangle.TrySample(x, y, out float candidate))
+            {
+                continue;
+            }
+
+            float distance = MathF.Abs(candidate - referenceZ);
+            if (!found || distance < bestDistance || (distance == bestDistance && candidate > z))
+            {
+                found = true;
+                bestDistance = distance;
+                z = candidate;
+            }
+        }
+
+        return found;
+    }
+
+    private static FloorTriangle[] BuildFloors(string cell, CellStruct cellStruct, CellTransform transform)
+    {
+        Dictionary<ushort, Polygon> polygons = cellStruct.PhysicsPolygons
+            ?? throw new ArgumentNullException(nameof(cellStruct), $"{cell}: cellStruct.PhysicsPolygons is null.");
+        var triangles = new List<FloorTriangle>();
+        var keys = new List<ushort>(polygons.Keys);
+        keys.Sort();
+        foreach (ushort key in keys)
+        {
+            Vector3[] v = transform.Polygon(polygons[key], $"physics polygon {key}");
+            Vector3 normal = Geometry.NewellNormal(v, v[0]);
+            if (normal.Z < PhysicsConstants.FloorZ)
+            {
+                continue; // a wall, a ceiling, too steep, or no area
+            }
+
+            for (int i = 1; i + 1 < v.Length; i++)
+            {
+                if (FloorTriangle.TryCreate(v[0], v[i], v[i + 1], out FloorTriangle triangle))
+                {
+                    triangles.Add(triangle);
+                }
+            }
+        }
+
+        return [.. triangles];
+    }
+
+    private static (CellPortalInfo[] Infos, PortalShape[] Shapes) BuildPortals(
+        string cell, uint cellId, EnvCell envCell, CellStruct cellStruct, CellTransform transform)
+    {
+        List<CellPortal> portals = envCell.CellPortals
+            ?? throw new ArgumentNullException(nameof(envCell), $"{cell}: envCell.CellPortals is null.");
+        Dictionary<ushort, Polygon> polygons = cellStruct.Polygons
+            ?? throw new ArgumentNullException(nameof(cellStruct), $"{cell}: cellStruct.Polygons is null.");
+        var infos = new CellPortalInfo[portals.Count];
+        var shapes = new PortalShape[portals.Count];
+        for (int i = 0; i < portals.Count; i++)
+        {
+            CellPortal portal = portals[i] ?? throw new ArgumentNullException(nameof(envCell), $"{cell}: CellPortals[{i}] is null.");
+            if (!polygons.TryGetValue(portal.PolygonId, out Polygon? polygon))
+            {
+                throw new ArgumentException(
+                    $"{cell}: portal {i} (to 0x{portal.OtherCellId:X4}) names polygon {portal.PolygonId}, which cellStruct.Polygons lacks.",
+                    nameof(cellStruct));
+            }
+
+            Vector3[] v = transform.Polygon(polygon, $"portal {i} polygon {portal.PolygonId}");
+            bool cellOnPositiveSide = (portal.Flags & PortalFlags.PortalSide) != 0;
+            PortalShape shape = PortalShape.Create(v, cellOnPositiveSide);
+            shapes[i] = shape;
+            infos[i] = new CellPortalInfo(CellIds.Prefix(cellId) | portal.OtherCellId, shape.Origin, shape.OutNormal);
+        }
+
+        return (infos, shapes);
+    }
+
+    private static void ThrowIfNotFinite(float x, float y, float z)
+    {
+        if (!float.IsFinite(x) || !float.IsFinite(y) || !float.IsFinite(z))
+        {
+            throw new ArgumentException(
+                $"floor query ({x}, {y}, reference {z}) must be finite.",
+                !float.IsFinite(x) ? "worldX" : !float.IsFinite(y) ? "worldY" : "referenceZ");
+        }
+    }
+
+    private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+
+    /// <summary>Moves a CellStruct's vertices to landblock-local space, validating them once each.</summary>
+    private sealed class CellTransform(string cell, CellStruct cellStruct, Vector3 origin, Quaternion orientation)
+    {
+        private readonly Dictionary<ushort, SWVertex> _vertices = cellStruct.VertexArray?.Vertices
+            ?? throw new ArgumentNullException(nameof(cellStruct), $"{cell}: cellStruct.VertexArray.Vertices is null.");
+
+        private readonly Dictionary<short, Vector3> _moved = [];
+
+        public Vector3[] Polygon(Polygon polygon, string what)
+        {
+            List<short> ids = polygon?.VertexIds
+                ?? throw new ArgumentNullException(nameof(cellStruct), $"{cell}: {what} or its VertexIds is null.");
+            if (ids.Count < 3)
+            {
+                throw new ArgumentException($"{cell}: {what} has {ids.Count} vertices; a polygon needs at least 3.", nameof(cellStruct));
+            }
+
+            var result = new Vector3[ids.Count];
+            for (int i = 0; i < ids.Count; i++)
+            {
+                result[i] = Vertex(ids[i], what);
+            }
+
+            return result;
+        }
+
+        private Vector3 Vertex(short id, string what)
+        {
+            if (_moved.TryGetValue(id, out Vector3 moved))
+            {
+                return moved;
+            }
+
+            if (id < 0 || !_vertices.TryGetValue((ushort)id, out SWVertex? vertex) || vertex is null)
+            {
+                throw new ArgumentException($"{cell}: {what} names vertex {id}, which the vertex array lacks.", nameof(cellStruct));
+            }
+
+            Vector3 local = vertex.Origin;
+            if (!IsFinite(local))
+            {
+                throw new ArgumentException($"{cell}: vertex {id} ({what}) is {local}; vertices must be finite.", nameof(cellStruct));
+            }
+
+            moved = origin + Vector3.Transform(local, orientation);
+            _moved[id] = moved;
+            return moved;
+        }
+    }
+}

@@ -1,0 +1,72 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>Small geometric helpers shared by the surfaces. Allocation-free.</summary>
+internal static class Geometry
+{
+    /// <summary>
+    /// Unit normal of a polygon by Newell's method (the winding normal: counter-clockwise seen from
+    /// above gives +Z), computed in double about <paramref name="centre"/>; <see cref="Vector3.Zero"/>
+    /// when the polygon has no area. Unlike <c>cross(v1 − v0, v2 − v0)</c> it does not depend on the
+    /// first three vertices being non-collinear, and it averages a non-planar polygon.
+    /// </summary>
+    public static Vector3 NewellNormal(ReadOnlySpan<Vector3> vertices, Vector3 centre)
+    {
+        double nx = 0, ny = 0, nz = 0;
+        for (int i = 0; i < vertices.Length; i++)
+        {
+            Vector3 a = vertices[i] - centre;
+            Vector3 b = vertices[(i + 1) % vertices.Length] - centre;
+            nx += ((double)a.Y - b.Y) * ((double)a.Z + b.Z);
+            ny += ((double)a.Z - b.Z) * ((double)a.X + b.X);
+            nz += ((double)a.X - b.X) * ((double)a.Y + b.Y);
+        }
+
+        double length = Math.Sqrt((nx * nx) + (ny * ny) + (nz * nz));
+        if (!(length > MinDoubleArea))
+        {
+            return Vector3.Zero;
+        }
+
+        return new Vector3((float)(nx / length), (float)(ny / length), (float)(nz / length));
+    }
+
+    /// <summary>Twice the smallest polygon area (m²) with a defined normal; see <see cref="FloorTriangle.MinDoubleArea"/>.</summary>
+    public const double MinDoubleArea = FloorTriangle.MinDoubleArea;
+
+    /// <summary>
+    /// Whether <paramref name="p"/> is inside the polygon <paramref name="outline"/> (even-odd rule,
+    /// any winding, convex or not) or within <paramref name="tolerance"/> metres of one of its edges.
+    /// </summary>
+    public static bool PolygonContains(ReadOnlySpan<Vector2> outline, Vector2 p, float tolerance)
+    {
+        bool inside = false;
+        float tol2 = tolerance * tolerance;
+        for (int i = 0, j = outline.Length - 1; i < outline.Length; j = i++)
+        {
+            Vector2 a = outline[j];
+            Vector2 b = outline[i];
+            if (DistanceSquaredToSegment(p, a, b) <= tol2)
+            {
+                return true;
+            }
+
+            if ((b.Y > p.Y) != (a.Y > p.Y) && p.X < a.X + ((p.Y - a.Y) * (b.X - a.X) / (b.Y - a.Y)))
+            {
+                inside = !inside;
+            }
+        }
+
+        return inside;
+    }
+
+    /// <summary>Squared distance from <paramref name="p"/> to the segment a–b (a point when a = b).</summary>
+    public static float DistanceSquaredToSegment(Vector2 p, Vector2 a, Vector2 b)
+    {
+        Vector2 ab = b - a;
+        float lengthSquared = ab.LengthSquared();
+        float t = lengthSquared > 0f ? Math.Clamp(Vector2.Dot(p - a, ab) / lengthSquared, 0f, 1f) : 0f;
+        return Vector2.DistanceSquared(p, a + (ab * t));
+    }
+}

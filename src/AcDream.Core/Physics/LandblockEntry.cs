@@ -1,0 +1,103 @@
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Everything the engine holds for one registered landblock, with the lookups Resolve needs
+/// prepared once: cells by id, each portal's neighbour, and which cells' floors lie over each
+/// outdoor cell. Immutable after construction.
+/// </summary>
+internal sealed class LandblockEntry
+{
+    /// <summary>Portal target meaning "the outdoors".</summary>
+    public const int Outdoors = -1;
+
+    /// <summary>Portal target meaning "a cell the engine does not have".</summary>
+    public const int Missing = -2;
+
+    private readonly Dictionary<uint, int> _indexById;
+
+    public LandblockEntry(int x, int y, TerrainSurface terrain, CellSurface[] cells)
+    {
+        X = x;
+        Y = y;
+        Terrain = terrain;
+        Cells = cells;
+        _indexById = new Dictionary<uint, int>(cells.Length);
+        for (int i = 0; i < cells.Length; i++)
+        {
+            _indexById.Add(cells[i].CellId, i);
+        }
+
+        PortalTargets = new int[cells.Length][];
+        for (int i = 0; i < cells.Length; i++)
+        {
+            IReadOnlyList<CellPortalInfo> portals = cells[i].Portals;
+            var targets = new int[portals.Count];
+            for (int k = 0; k < targets.Length; k++)
+            {
+                uint target = portals[k].TargetCellId;
+                targets[k] = (target & 0xFFFF) == CellIds.Outdoors ? Outdoors
+                    : _indexById.TryGetValue(target, out int index) ? index
+                    : Missing;
+            }
+
+            PortalTargets[i] = targets;
+        }
+
+        EntryBuckets = BuildEntryBuckets(cells);
+    }
+
+    public int X { get; }
+
+    public int Y { get; }
+
+    public TerrainSurface Terrain { get; }
+
+    /// <summary>The landblock's cells, in ascending id order.</summary>
+    public CellSurface[] Cells { get; }
+
+    /// <summary>Per cell, per portal: index of the neighbour in <see cref="Cells"/>, <see cref="Outdoors"/> or <see cref="Missing"/>.</summary>
+    public int[][] PortalTargets { get; }
+
+    /// <summary>
+    /// Per outdoor cell (index cx * 8 + cy): the indices of the cells whose floor bounds overlap it.
+    /// Outdoor movers test only these, so cells far away cost nothing.
+    /// </summary>
+    public int[][] EntryBuckets { get; }
+
+    public bool TryGetCellIndex(uint cellId, out int index) => _indexById.TryGetValue(cellId, out index);
+
+    private static int[][] BuildEntryBuckets(CellSurface[] cells)
+    {
+        const int n = PhysicsConstants.CellsPerSide;
+        var lists = new List<int>?[n * n];
+        for (int i = 0; i < cells.Length; i++)
+        {
+            CellSurface cell = cells[i];
+            if (!cell.HasFloor)
+            {
+                continue;
+            }
+
+            int cx0 = Bucket(cell.FloorMin.X), cx1 = Bucket(cell.FloorMax.X);
+            int cy0 = Bucket(cell.FloorMin.Y), cy1 = Bucket(cell.FloorMax.Y);
+            for (int cx = cx0; cx <= cx1; cx++)
+            {
+                for (int cy = cy0; cy <= cy1; cy++)
+                {
+                    (lists[(cx * n) + cy] ??= []).Add(i);
+                }
+            }
+        }
+
+        var buckets = new int[n * n][];
+        for (int b = 0; b < buckets.Length; b++)
+        {
+            buckets[b] = lists[b]?.ToArray() ?? [];
+        }
+
+        return buckets;
+    }
+
+    private static int Bucket(float coordinate) =>
+        (int)Math.Clamp(MathF.Floor(coordinate / PhysicsConstants.CellSize), 0f, PhysicsConstants.CellsPerSide - 1);
+}

@@ -1,0 +1,51 @@
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The engine's constants and tolerances, in one place. Lengths are metres.
+/// </summary>
+public static class PhysicsConstants
+{
+    /// <summary>Side of a landblock: 192 m (8 outdoor cells of 24 m).</summary>
+    public const float LandblockSize = 192f;
+
+    /// <summary>Side of an outdoor cell: 24 m, also the spacing of the terrain's height vertices.</summary>
+    public const float CellSize = 24f;
+
+    /// <summary>Outdoor cells per landblock side (8).</summary>
+    public const int CellsPerSide = 8;
+
+    /// <summary>Height vertices per landblock side (9).</summary>
+    public const int VerticesPerSide = 9;
+
+    /// <summary>Highest landblock X or Y index of the world (the world has 255 × 255 landblocks).</summary>
+    public const int MaxLandblockIndex = 254;
+
+    /// <summary>
+    /// A polygon is a walkable floor when the Z of its unit normal is at least this (about 48.4°),
+    /// the game's walkable limit. Walls (normal Z = 0) and ceilings (negative) never are.
+    /// </summary>
+    public const float FloorZ = 0.66417414618662751f;
+
+    /// <summary>The game's landing threshold for airborne movers: unit normal Z of 5°.</summary>
+    public const float LandingZ = 0.0871557f;
+
+    /// <summary>
+    /// How far outside a polygon's edge a point still counts as on the polygon: 0.2 mm, the game's
+    /// general tolerance. It makes a point on an edge or vertex shared by two triangles belong to
+    /// both despite rounding, and is far below anything a player can see.
+    /// </summary>
+    public const float EdgeTolerance = 0.0002f;
+
+    /// <summary>
+    /// A portal polygon whose unit normal has |Z| at least this is an opening in a floor or ceiling
+    /// (horizontal); below it the portal is a doorway (vertical). 0.5 is 60° from vertical: real
+    /// doorways lean a few degrees at most, real floor openings not at all.
+    /// </summary>
+    public const float HorizontalPortalNormalZ = 0.5f;
+
+    /// <summary>
+    /// Most cells one move may pass through after leaving the current one (doorway → vestibule →
+    /// room, or opening → shaft → cellar). Bounds the search on cyclic portal graphs.
+    /// </summary>
+    public const int MaxPortalHops = 4;
+}

@@ -1,0 +1,144 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// A portal polygon prepared for crossing tests, in landblock-local metres. A doorway (vertical)
+/// is tested as the rectangle that bounds it in its own plane; a floor or ceiling opening
+/// (horizontal) as its outline seen from above.
+/// </summary>
+internal sealed class PortalShape
+{
+    private readonly Vector2[] _outline;
+
+    private PortalShape(PortalKind kind, Vector3 origin, Vector3 outNormal, Vector2 tangent, float tMin, float tMax, float zMin, float zMax, Vector2[] outline)
+    {
+        Kind = kind;
+        Origin = origin;
+        OutNormal = outNormal;
+        Tangent = tangent;
+        TMin = tMin;
+        TMax = tMax;
+        ZMin = zMin;
+        ZMax = zMax;
+        _outline = outline;
+    }
+
+    public PortalKind Kind { get; }
+
+    /// <summary>Centroid (mean of the vertices).</summary>
+    public Vector3 Origin { get; }
+
+    /// <summary>Unit normal pointing out of the owning cell; zero when degenerate.</summary>
+    public Vector3 OutNormal { get; }
+
+    /// <summary>Vertical portals: unit horizontal direction along the opening.</summary>
+    public Vector2 Tangent { get; }
+
+    /// <summary>Vertical portals: extent along <see cref="Tangent"/>, relative to <see cref="Origin"/>.</summary>
+    public float TMin { get; }
+
+    public float TMax { get; }
+
+    /// <summary>Lowest and highest Z of the polygon.</summary>
+    public float ZMin { get; }
+
+    public float ZMax { get; }
+
+    /// <summary>
+    /// Prepares a portal from its landblock-local vertices. <paramref name="cellOnPositiveSide"/>
+    /// says which side of the winding normal the owning cell lies on (the dat's PortalSide bit).
+    /// </summary>
+    public static PortalShape Create(ReadOnlySpan<Vector3> vertices, bool cellOnPositiveSide)
+    {
+        Vector3 origin = Vector3.Zero;
+        float zMin = float.MaxValue, zMax = float.MinValue;
+        foreach (Vector3 v in vertices)
+        {
+            origin += v;
+            zMin = MathF.Min(zMin, v.Z);
+            zMax = MathF.Max(zMax, v.Z);
+        }
+
+        origin /= vertices.Length;
+        Vector3 normal = Geometry.NewellNormal(vertices, origin);
+        if (normal == Vector3.Zero)
+        {
+            return new PortalShape(PortalKind.Degenerate, origin, Vector3.Zero, default, 0f, 0f, zMin, zMax, []);
+        }
+
+        Vector3 outNormal = cellOnPositiveSide ? -normal : normal;
+        if (MathF.Abs(outNormal.Z) >= PhysicsConstants.HorizontalPortalNormalZ)
+        {
+            var outline = new Vector2[vertices.Length];
+            for (int i = 0; i < vertices.Length; i++)
+            {
+                outline[i] = new Vector2(vertices[i].X, vertices[i].Y);
+            }
+
+            return new PortalShape(PortalKind.Horizontal, origin, outNormal, default, 0f, 0f, zMin, zMax, outline);
+        }
+
+        var tangent = Vector2.Normalize(new Vector2(-outNormal.Y, outNormal.X));
+        float tMin = float.MaxValue, tMax = float.MinValue;
+        foreach (Vector3 v in vertices)
+        {
+            float t = Vector2.Dot(tangent, new Vector2(v.X - origin.X, v.Y - origin.Y));
+            tMin = MathF.Min(tMin, t);
+            tMax = MathF.Max(tMax, t);
+        }
+
+        return new PortalShape(PortalKind.Vertical, origin, outNormal, tangent, tMin, tMax, zMin, zMax, []);
+    }
+
+    /// <summary>
+    /// For a vertical portal: the fraction t (0..1) along the horizontal move p0 → p1, made with the
+    /// feet at <paramref name="z"/>, where the mover passes out through the doorway; or −1 when the
+    /// move ends on the cell's side of the portal plane or passes beside, above or more than
+    /// <paramref name="stepUp"/> below the opening.
+    /// </summary>
+    public float CrossingFraction(Vector2 p0, Vector2 p1, float z, float stepUp)
+    {
+        var o = new Vector3(p0.X - Origin.X, p0.Y - Origin.Y, z - Origin.Z);
+        float d0 = Vector3.Dot(OutNormal, o);
+        float d1 = d0 + (OutNormal.X * (p1.X - p0.X)) + (OutNormal.Y * (p1.Y - p0.Y));
+        if (!(d1 > 0f) || d1 <= d0)
+        {
+            return -1f;
+        }
+
+        float t = d0 >= 0f ? 0f : -d0 / (d1 - d0);
+        Vector2 q = p0 + ((p1 - p0) * t);
+        float along = Vector2.Dot(Tangent, new Vector2(q.X - Origin.X, q.Y - Origin.Y));
+        const float tol = PhysicsConstants.EdgeTolerance;
+        if (along < TMin - tol || along > TMax + tol || z > ZMax + tol || z < ZMin - stepUp - tol)
+        {
+            return -1f;
+        }
+
+        return t;
+    }
+
+    /// <summary>
+    /// For a horizontal portal: whether (x, y) is inside the opening seen from above (edges within
+    /// <see cref="PhysicsConstants.EdgeTolerance"/> count as inside).
+    /// </summary>
+    public bool ContainsXY(float x, float y) => Geometry.PolygonContains(_outline, new Vector2(x, y), PhysicsConstants.EdgeTolerance);
+
+    /// <summary>For a horizontal portal: Z of its plane at (x, y).</summary>
+    public float PlaneZ(float x, float y) =>
+        Origin.Z - (((OutNormal.X * (x - Origin.X)) + (OutNormal.Y * (y - Origin.Y))) / OutNormal.Z);
+}
+
+/// <summary>How a portal polygon is oriented.</summary>
+internal enum PortalKind
+{
+    /// <summary>A doorway: crossed by walking through its plane.</summary>
+    Vertical,
+
+    /// <summary>An opening in a floor or ceiling: entered by standing over it.</summary>
+    Horizontal,
+
+    /// <summary>Zero area: no crossing test applies.</summary>
+    Degenerate,
+}
