@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
-using AcDream.Fixtures;
+using AcDream.App.Fixtures;
 
 namespace AcDream.Core.Tests;
 

@@ -3,7 +3,7 @@ using System.Numerics;
 using System.Text.Json;
 using AcDream.Core.Dat;
 
-namespace AcDream.Fixtures;
+namespace AcDream.App.Fixtures;
 
 /// <summary>
 /// Reads the Holtburg cell fixtures (one EnvCell per JSON file, the format of
