@@ -19,6 +19,9 @@ public sealed class CellSurface
     private readonly FloorTriangle[] _floors;
     private readonly PortalShape[] _portalShapes;
 
+    /// <summary>Uniform grid over the floor triangles; null for small floors, where brute force is faster.</summary>
+    private readonly FloorGrid? _grid;
+
     /// <summary>The EnvCell's dat id (e.g., 0xA9B40100).</summary>
     public uint CellId { get; }
 
@@ -90,6 +93,7 @@ public sealed class CellSurface
 
             FloorMin = min;
             FloorMax = max;
+            _grid = _floors.Length > FloorGrid.MinTriangles ? new FloorGrid(_floors, min, max) : null;
         }
         else
         {
@@ -168,10 +172,13 @@ public sealed class CellSurface
             return false;
         }
 
+        ReadOnlySpan<int> candidates = _grid is null ? default : _grid.Candidates(x, y);
+        int count = _grid is null ? _floors.Length : candidates.Length;
         bool found = false;
         float bestDistance = float.PositiveInfinity;
-        foreach (ref readonly FloorTriangle triangle in _floors.AsSpan())
+        for (int i = 0; i < count; i++)
         {
+            ref readonly FloorTriangle triangle = ref _floors[_grid is null ? i : candidates[i]];
             if (!triangle.TrySample(x, y, out float candidate))
             {
                 continue;

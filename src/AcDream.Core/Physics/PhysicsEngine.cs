@@ -30,6 +30,12 @@ public sealed class PhysicsEngine
     /// </summary>
     private const float SeamSlack = 1f;
 
+    /// <summary>Most sub-steps one swept move takes (see <see cref="MovementOptions.SweepStepLength"/>).</summary>
+    private const int MaxSweepSteps = 1 << 16;
+
+    /// <summary>The options of the four-argument Resolve: no effects.</summary>
+    private static readonly MovementOptions NoEffects = default;
+
     private readonly LandblockEntry?[] _landblocks = new LandblockEntry?[WorldSide * WorldSide];
     private readonly int _originX;
     private readonly int _originY;
@@ -171,13 +177,68 @@ public sealed class PhysicsEngine
         float stepUpHeight)
     {
         Validate(currentPos, currentCellId, delta, stepUpHeight);
-        return CellIds.IsIndoor(currentCellId)
-            ? ResolveIndoor(currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight)
-            : ResolveOutdoor(currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight);
+        return ResolveStep(currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in NoEffects, out _);
     }
 
-    private ResolveResult ResolveOutdoor(Vector3 pos, uint cellId, Vector2 delta, float stepUp)
+    /// <summary>
+    /// <see cref="Resolve(Vector3, uint, Vector3, float)"/> with opt-in effects beyond the spec. With
+    /// <c>default(MovementOptions)</c> the answer is bit for bit that of the four-argument call.
+    /// </summary>
+    /// <param name="currentPos">Where the mover's feet are, world metres.</param>
+    /// <param name="currentCellId">The cell the mover is in (<c>0xXXYYCCCC</c>).</param>
+    /// <param name="delta">The intended move, world metres; its Z is ignored.</param>
+    /// <param name="stepUpHeight">Highest rise one move (one sub-step when sweeping) may climb, metres, ≥ 0.</param>
+    /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
+    /// <returns>
+    /// As the four-argument call; with <see cref="MovementOptions.SweepStepLength"/> a move stopped part
+    /// way returns the last sub-step that was accepted, and with <see cref="MovementOptions.StepDownHeight"/>
+    /// an airborne mover is reported with <c>IsOnGround</c> false over the cell below it.
+    /// </returns>
+    /// <exception cref="ArgumentException">As the four-argument call.</exception>
+    public ResolveResult Resolve(
+        Vector3 currentPos,
+        uint currentCellId,
+        Vector3 delta,
+        float stepUpHeight,
+        in MovementOptions options)
     {
+        Validate(currentPos, currentCellId, delta, stepUpHeight);
+        var move = new Vector2(delta.X, delta.Y);
+        if (options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep)
+        {
+            return Sweep(currentPos, currentCellId, move, stepUpHeight, in options, sweep);
+        }
+
+        return ResolveStep(currentPos, currentCellId, move, stepUpHeight, in options, out _);
+    }
+
+    /// <summary>Equal sub-steps no longer than <paramref name="sweep"/>, stopping at the first rejected one.</summary>
+    private ResolveResult Sweep(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, float sweep)
+    {
+        int steps = (int)Math.Min(Math.Ceiling(move.Length() / (double)sweep), MaxSweepSteps);
+        Vector2 step = move / steps;
+        ResolveResult result = ResolveStep(pos, cellId, step, stepUp, in options, out bool rejected);
+        for (int i = 1; i < steps && !rejected; i++)
+        {
+            ResolveResult next = ResolveStep(result.Position, result.CellId, step, stepUp, in options, out rejected);
+            if (!rejected)
+            {
+                result = next;
+            }
+        }
+
+        return result;
+    }
+
+    /// <summary>One move, end-point checked. <paramref name="rejected"/>: the mover was kept where it was.</summary>
+    private ResolveResult ResolveStep(Vector3 pos, uint cellId, Vector2 delta, float stepUp, in MovementOptions options, out bool rejected) =>
+        CellIds.IsIndoor(cellId)
+            ? ResolveIndoor(pos, cellId, delta, stepUp, in options, out rejected)
+            : ResolveOutdoor(pos, cellId, delta, stepUp, in options, out rejected);
+
+    private ResolveResult ResolveOutdoor(Vector3 pos, uint cellId, Vector2 delta, float stepUp, in MovementOptions options, out bool rejected)
+    {
+        rejected = true;
         Locate(pos, cellId, out int lbX, out int lbY, out Vector2 local);
         LandblockEntry? here = GetEntry(lbX, lbY);
         uint hereCellId = OutdoorCellId(lbX, lbY, local);
@@ -198,7 +259,13 @@ public sealed class PhysicsEngine
 
         if (TryEnterCell(there, candidate, pos.Z, stepUp, out int cellIndex, out float floorZ))
         {
-            return new ResolveResult(ToWorld(toX, toY, candidate, floorZ), there.Cells[cellIndex].CellId, true);
+            if (options.DoorsOnly && !EntersByDoor(there, cellIndex, candidate - delta, candidate, pos.Z, stepUp))
+            {
+                return new ResolveResult(pos, hereCellId, true); // rejected: the building's outer wall
+            }
+
+            rejected = false;
+            return Land(ToWorld(toX, toY, candidate, floorZ), pos.Z, there.Cells[cellIndex].CellId, in options);
         }
 
         float terrainZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
@@ -207,11 +274,54 @@ public sealed class PhysicsEngine
             return new ResolveResult(pos, hereCellId, true); // rejected: step too high
         }
 
-        return new ResolveResult(ToWorld(toX, toY, candidate, terrainZ), OutdoorCellId(toX, toY, candidate), true);
+        if (options.WalkableSlope && terrainZ > pos.Z && there.Terrain.NormalZUnchecked(candidate.X, candidate.Y) < PhysicsConstants.FloorZ)
+        {
+            return new ResolveResult(pos, hereCellId, true); // rejected: climbing a slope too steep to walk
+        }
+
+        rejected = false;
+        return Land(ToWorld(toX, toY, candidate, terrainZ), pos.Z, OutdoorCellId(toX, toY, candidate), in options);
     }
 
-    private ResolveResult ResolveIndoor(Vector3 pos, uint cellId, Vector2 delta, float stepUp)
+    /// <summary>
+    /// The result of arriving over ground at <paramref name="ground"/>: on it, or, with step down on
+    /// and the ground farther below the feet than the step-down height, airborne at the feet's Z.
+    /// </summary>
+    private static ResolveResult Land(Vector3 ground, float z, uint cellId, in MovementOptions options) =>
+        options.StepDownHeight is float down && z - ground.Z > down
+            ? new ResolveResult(ground with { Z = z }, cellId, false)
+            : new ResolveResult(ground, cellId, true);
+
+    /// <summary>
+    /// Doors only: whether a move from <paramref name="p0"/> to <paramref name="p1"/> (landblock-local)
+    /// enters cell <paramref name="cellIndex"/> across one of its portals to the outdoors, or starts
+    /// over that cell's floor already.
+    /// </summary>
+    private static bool EntersByDoor(LandblockEntry entry, int cellIndex, Vector2 p0, Vector2 p1, float z, float stepUp)
     {
+        CellSurface cell = entry.Cells[cellIndex];
+        if (cell.TrySampleFloor(p0.X, p0.Y, z, out float floorHere) && MathF.Abs(floorHere - z) <= stepUp)
+        {
+            return true;
+        }
+
+        ReadOnlySpan<PortalShape> shapes = cell.PortalShapes;
+        int[] targets = entry.PortalTargets[cellIndex];
+        for (int k = 0; k < shapes.Length; k++)
+        {
+            // Inward across the portal is outward along the reversed move.
+            if (targets[k] == LandblockEntry.Outdoors && shapes[k].Kind == PortalKind.Vertical && shapes[k].CrossingFraction(p1, p0, z, stepUp) >= 0f)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    private ResolveResult ResolveIndoor(Vector3 pos, uint cellId, Vector2 delta, float stepUp, in MovementOptions options, out bool rejected)
+    {
+        rejected = true;
         int lbX = CellIds.LandblockX(cellId), lbY = CellIds.LandblockY(cellId);
         LandblockEntry? entry = GetEntry(lbX, lbY);
         if (entry is null)
@@ -231,12 +341,17 @@ public sealed class PhysicsEngine
         switch (landing.Kind)
         {
             case Arrival.Floor when !IsStepTooHigh(cell, p0, pos.Z, landing.Z, stepUp):
-                return new ResolveResult(ToWorld(lbX, lbY, p1, landing.Z), entry.Cells[landing.CellIndex].CellId, true);
-            case Arrival.Outdoors when !IsStepTooHigh(cell, p0, pos.Z, landing.Z, stepUp):
-                return new ResolveResult(
+                rejected = false;
+                return Land(ToWorld(lbX, lbY, p1, landing.Z), pos.Z, entry.Cells[landing.CellIndex].CellId, in options);
+            case Arrival.Outdoors when !IsStepTooHigh(cell, p0, pos.Z, landing.Z, stepUp)
+                && !(options.WalkableSlope && landing.Z > pos.Z && GetEntry(landing.OutdoorX, landing.OutdoorY)!.Terrain
+                    .NormalZUnchecked(landing.OutdoorLocal.X, landing.OutdoorLocal.Y) < PhysicsConstants.FloorZ):
+                rejected = false;
+                return Land(
                     ToWorld(landing.OutdoorX, landing.OutdoorY, landing.OutdoorLocal, landing.Z),
+                    pos.Z,
                     OutdoorCellId(landing.OutdoorX, landing.OutdoorY, landing.OutdoorLocal),
-                    true);
+                    in options);
             default:
                 // Rejected (wall, missing cell, unloaded land, step too high), or nothing under the
                 // mover at all: it stays, on the ground only if its own cell has a floor under it.

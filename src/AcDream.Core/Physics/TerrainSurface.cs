@@ -162,6 +162,34 @@ public sealed class TerrainSurface
         return InterpolateCell(cx, cy, u, v);
     }
 
+    /// <summary>
+    /// Z of the unit surface normal at a point already known to be finite: of the triangle under it
+    /// (game triangles) or of the bilinear patch's tangent plane. 1 on flat ground.
+    /// </summary>
+    internal float NormalZUnchecked(float localX, float localY)
+    {
+        Locate(localX, localY, out int cx, out int cy, out double u, out double v);
+        int sw = (cx * Side) + cy;
+        double hSW = _z[sw], hNW = _z[sw + 1], hSE = _z[sw + Side], hNE = _z[sw + Side + 1];
+        double du, dv; // metres of rise per cell width along x and y
+        if (LandblockId is null)
+        {
+            du = ((1 - v) * (hSE - hSW)) + (v * (hNE - hNW));
+            dv = ((1 - u) * (hNW - hSW)) + (u * (hNE - hSE));
+        }
+        else if ((_swToNeCells & (1ul << ((cx * PhysicsConstants.CellsPerSide) + cy))) != 0)
+        {
+            (du, dv) = u >= v ? (hSE - hSW, hNE - hSE) : (hNE - hNW, hNW - hSW);
+        }
+        else
+        {
+            (du, dv) = u + v <= 1.0 ? (hSE - hSW, hNW - hSW) : (hNE - hNW, hNE - hSE);
+        }
+
+        double gx = du / PhysicsConstants.CellSize, gy = dv / PhysicsConstants.CellSize;
+        return (float)(1.0 / Math.Sqrt(1.0 + (gx * gx) + (gy * gy)));
+    }
+
     /// <summary>Outdoor cell number of a point already known to be finite.</summary>
     internal uint CellNumberUnchecked(float localX, float localY)
     {

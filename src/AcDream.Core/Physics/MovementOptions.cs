@@ -1,0 +1,76 @@
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Opt-in effects beyond the spec for
+/// <see cref="PhysicsEngine.Resolve(System.Numerics.Vector3, uint, System.Numerics.Vector3, float, in MovementOptions)"/>.
+/// Every effect is off by default, and <c>default(MovementOptions)</c> reproduces the four-argument
+/// <c>Resolve</c> bit for bit; an effect that is off costs one untaken branch.
+/// </summary>
+/// <remarks>Values are checked when set: an invalid one throws <see cref="ArgumentOutOfRangeException"/>.</remarks>
+public readonly record struct MovementOptions
+{
+    private readonly float? _stepDownHeight;
+    private readonly float? _sweepStepLength;
+
+    /// <summary>No effects: the spec's literal engine.</summary>
+    public static MovementOptions Literal => default;
+
+    /// <summary>
+    /// What a player uses: step down 1.5 m, the walkable-slope limit, sweeps of 0.48 m (a player's
+    /// sphere radius) and entry through doors only.
+    /// </summary>
+    public static MovementOptions Player => new()
+    {
+        StepDownHeight = 1.5f,
+        WalkableSlope = true,
+        SweepStepLength = 0.48f,
+        DoorsOnly = true,
+    };
+
+    /// <summary>
+    /// Step down / airborne, metres ≥ 0. Ground (terrain or floor) more than this below the mover's
+    /// feet is not snapped to: the mover keeps its Z, moves horizontally and is reported airborne
+    /// (<c>IsOnGround</c> false) over the cell whose surface is below it, and the caller's gravity
+    /// brings it down. Ground within this height below is snapped to (walking down stairs and hills).
+    /// A falling caller passes 0 so that it lands exactly when its Z reaches the ground.
+    /// </summary>
+    /// <value>Null (the default): off, always snap to the ground, as the spec does.</value>
+    public float? StepDownHeight
+    {
+        get => _stepDownHeight;
+        init => _stepDownHeight = value is not float v || (float.IsFinite(v) && v >= 0f)
+            ? value
+            : throw new ArgumentOutOfRangeException(nameof(StepDownHeight), value, "StepDownHeight must be a finite height ≥ 0 m, or null for off.");
+    }
+
+    /// <summary>
+    /// Walkable slope: a move that climbs onto terrain whose unit normal Z is below
+    /// <see cref="PhysicsConstants.FloorZ"/> (steeper than about 48.4°) is rejected, as in the game.
+    /// Moves down or across such a slope are allowed, so a mover on one is never frozen. Indoor
+    /// floors are walkable by definition. Off (the default): only the step height limits climbing.
+    /// </summary>
+    public bool WalkableSlope { get; init; }
+
+    /// <summary>
+    /// Swept movement, metres &gt; 0: a delta longer than this is resolved as equal sub-steps no longer
+    /// than it, stopping at the first sub-step that is rejected, so a fast mover cannot skip a wall,
+    /// a cliff or a gap. The game uses the mover's sphere radius (0.48 m for a player). At most
+    /// 65,536 sub-steps are taken; a longer delta gets longer sub-steps.
+    /// </summary>
+    /// <value>Null (the default): off, the spec's end-point check.</value>
+    public float? SweepStepLength
+    {
+        get => _sweepStepLength;
+        init => _sweepStepLength = value is not float v || (float.IsFinite(v) && v > 0f)
+            ? value
+            : throw new ArgumentOutOfRangeException(nameof(SweepStepLength), value, "SweepStepLength must be a finite length > 0 m, or null for off.");
+    }
+
+    /// <summary>
+    /// Doors only: an outdoor mover enters a cell only by crossing one of that cell's portals to the
+    /// outdoors; stepping onto the floor of any cell within step range elsewhere is rejected, as the
+    /// building's outer wall would stop it in the game. Off (the default): the spec's entry wherever
+    /// a floor lies under the mover.
+    /// </summary>
+    public bool DoorsOnly { get; init; }
+}
