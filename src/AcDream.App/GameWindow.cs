@@ -1,0 +1,371 @@
+using System.Numerics;
+using AcDream.App.Streaming;
+using AcDream.Core.Dat;
+using AcDream.Core.Physics;
+using Environment = AcDream.Core.Dat.Environment;
+
+namespace AcDream.App;
+
+/// <summary>
+/// The headless client window: owns the <see cref="PhysicsEngine"/>, the region's height table and
+/// the streaming state. A background loader thread reads landblocks from an
+/// <see cref="ILandblockSource"/>; the frame loop calls <see cref="UpdateStreaming"/> once per frame,
+/// which drains finished loads into the engine, unloads landblocks the observer left behind and
+/// requests the ones it approaches.
+/// </summary>
+/// <remarks>
+/// The streaming window is the square of landblocks within <see cref="StreamingRadius"/> of the
+/// observer's landblock (3 × 3), clipped to the world. The engine is touched only by the frame
+/// thread; the loader thread only reads from the source. A cell that cannot be built is skipped with
+/// a warning; a landblock that cannot be built at all is not registered (the engine never holds half
+/// of one), is reported, and is requested again <see cref="RetryDelayFrames"/> frames later.
+/// </remarks>
+public sealed class GameWindow : IDisposable
+{
+    /// <summary>Landblocks kept loaded on each side of the observer's: 1, a 3 × 3 square.</summary>
+    public const int StreamingRadius = 1;
+
+    /// <summary>Frames (<see cref="UpdateStreaming"/> calls) before a failed landblock is requested again: 30, one second at 30 Hz.</summary>
+    public const int RetryDelayFrames = 30;
+
+    private readonly ILandblockSource _source;
+    private readonly float[] _heightTable;
+    private readonly Action<string> _log;
+    private readonly int _originX;
+    private readonly int _originY;
+
+    // Guarded by _streamingLock: the loader's inbox and outbox, and what is in flight.
+    private readonly object _streamingLock = new();
+    private readonly Queue<uint> _requests = new();
+    private readonly Queue<(uint Id, LoadedLandblock? Loaded, string? Error)> _completed = new();
+    private readonly HashSet<uint> _pending = [];
+    private bool _stopping;
+
+    // Frame thread only.
+    private readonly HashSet<uint> _window = [];
+    private readonly HashSet<uint> _loaded = [];
+    private readonly Dictionary<uint, long> _retryAtFrame = [];
+    private readonly Thread _loader;
+    private long _frame;
+
+    /// <summary>
+    /// Creates the window and starts its loader thread. Nothing is loaded until the first
+    /// <see cref="UpdateStreaming"/>.
+    /// </summary>
+    /// <param name="source">Where landblocks come from; called on the loader thread.</param>
+    /// <param name="heightTable">The region's 256 heights in metres (<c>LandHeightTable</c>); copied.</param>
+    /// <param name="centerLandblockId">The landblock whose south-west corner is world (0, 0), <c>0xXXYYFFFF</c>.</param>
+    /// <param name="log">Receives warnings and load failures, one line each; null to discard them.</param>
+    /// <exception cref="ArgumentException">The table does not have 256 finite entries, or the id is not a landblock of the world.</exception>
+    public GameWindow(ILandblockSource source, float[] heightTable, uint centerLandblockId, Action<string>? log = null)
+    {
+        ArgumentNullException.ThrowIfNull(source);
+        ArgumentNullException.ThrowIfNull(heightTable);
+        if (heightTable.Length != 256 || Array.Exists(heightTable, h => !float.IsFinite(h)))
+        {
+            throw new ArgumentException($"the height table must have 256 finite heights; it has {heightTable.Length} entries.", nameof(heightTable));
+        }
+
+        Physics = new PhysicsEngine(centerLandblockId);
+        _source = source;
+        _heightTable = (float[])heightTable.Clone();
+        _log = log ?? (_ => { });
+        _originX = (int)(centerLandblockId >> 24);
+        _originY = (int)((centerLandblockId >> 16) & 0xFF);
+        _loader = new Thread(LoaderLoop) { IsBackground = true, Name = "landblock loader" };
+        _loader.Start();
+    }
+
+    /// <summary>Raised on the frame thread after a landblock (<c>0xXXYYFFFF</c>) is registered in the engine.</summary>
+    public event Action<uint>? LandblockLoaded;
+
+    /// <summary>Raised on the frame thread after a landblock (<c>0xXXYYFFFF</c>) is removed from the engine.</summary>
+    public event Action<uint>? LandblockUnloaded;
+
+    /// <summary>The engine, in the world frame of the centre landblock (metres; world (0, 0) is its south-west corner).</summary>
+    public PhysicsEngine Physics { get; }
+
+    /// <summary>The landblocks (<c>0xXXYYFFFF</c>) registered in the engine. Frame thread only.</summary>
+    public IReadOnlyCollection<uint> LoadedLandblocks => _loaded;
+
+    /// <summary>The landblocks (<c>0xXXYYFFFF</c>) the streaming window wants, as of the last <see cref="UpdateStreaming"/>. Frame thread only.</summary>
+    public IReadOnlyCollection<uint> WindowLandblocks => _window;
+
+    /// <summary>
+    /// The landblock (<c>0xXXYYFFFF</c>) under a world position; positions off the world clamp to its edge.
+    /// </summary>
+    /// <param name="worldPosition">World metres (Z is ignored).</param>
+    public uint LandblockAt(Vector3 worldPosition)
+    {
+        int x = Math.Clamp(_originX + (int)MathF.Floor(worldPosition.X / PhysicsConstants.LandblockSize), 0, PhysicsConstants.MaxLandblockIndex);
+        int y = Math.Clamp(_originY + (int)MathF.Floor(worldPosition.Y / PhysicsConstants.LandblockSize), 0, PhysicsConstants.MaxLandblockIndex);
+        return ((uint)x << 24) | ((uint)y << 16) | 0xFFFF;
+    }
+
+    /// <summary>
+    /// The frame loop's streaming step: moves the window to the observer, registers the loads that
+    /// finished (those still in the window), unloads landblocks outside the window, and requests the
+    /// missing ones (nearest first) from the loader thread. Never blocks on a load.
+    /// </summary>
+    /// <param name="observerWorldPosition">The observer (the player), world metres.</param>
+    public void UpdateStreaming(Vector3 observerWorldPosition)
+    {
+        _frame++;
+        uint center = LandblockAt(observerWorldPosition);
+        int cx = (int)(center >> 24), cy = (int)((center >> 16) & 0xFF);
+        _window.Clear();
+        for (int dx = -StreamingRadius; dx <= StreamingRadius; dx++)
+        {
+            for (int dy = -StreamingRadius; dy <= StreamingRadius; dy++)
+            {
+                int x = cx + dx, y = cy + dy;
+                if (x >= 0 && y >= 0 && x <= PhysicsConstants.MaxLandblockIndex && y <= PhysicsConstants.MaxLandblockIndex)
+                {
+                    _window.Add(((uint)x << 24) | ((uint)y << 16) | 0xFFFF);
+                }
+            }
+        }
+
+        lock (_streamingLock)
+        {
+            while (_completed.Count > 0)
+            {
+                (uint id, LoadedLandblock? loaded, string? error) = _completed.Dequeue();
+                _pending.Remove(id);
+                if (!_window.Contains(id))
+                {
+                    continue; // the observer moved on while it loaded
+                }
+
+                if (loaded is null || !ApplyLoadedTerrainLocked(id, loaded, out error))
+                {
+                    _log($"landblock 0x{id:X8}: could not load ({error}); retrying in {RetryDelayFrames} frames.");
+                    _retryAtFrame[id] = _frame + RetryDelayFrames;
+                }
+            }
+
+            foreach (uint id in _loaded.Where(id => !_window.Contains(id)).ToList())
+            {
+                UnloadLandblockLocked(id);
+            }
+
+            foreach (uint id in _retryAtFrame.Keys.Where(id => !_window.Contains(id)).ToList())
+            {
+                _retryAtFrame.Remove(id);
+            }
+
+            bool requested = false;
+            foreach (uint id in _window.OrderBy(id => Chebyshev(id, cx, cy)).ThenBy(id => id))
+            {
+                if (_loaded.Contains(id) || _pending.Contains(id)
+                    || (_retryAtFrame.TryGetValue(id, out long retryAt) && _frame < retryAt))
+                {
+                    continue;
+                }
+
+                _retryAtFrame.Remove(id);
+                _pending.Add(id);
+                _requests.Enqueue(id);
+                requested = true;
+            }
+
+            if (requested)
+            {
+                Monitor.PulseAll(_streamingLock);
+            }
+        }
+    }
+
+    /// <summary>
+    /// Waits until every landblock requested so far has finished loading (or failed); the next
+    /// <see cref="UpdateStreaming"/> registers them. The scene runner calls it to keep runs reproducible.
+    /// </summary>
+    /// <param name="timeout">How long to wait at most.</param>
+    /// <returns>True when nothing is in flight any more; false on time-out.</returns>
+    public bool WaitForLoads(TimeSpan timeout)
+    {
+        DateTime deadline = DateTime.UtcNow + timeout;
+        lock (_streamingLock)
+        {
+            while (_completed.Count < _pending.Count)
+            {
+                TimeSpan left = deadline - DateTime.UtcNow;
+                if (left <= TimeSpan.Zero || !Monitor.Wait(_streamingLock, left))
+                {
+                    return _completed.Count >= _pending.Count;
+                }
+            }
+
+            return true;
+        }
+    }
+
+    /// <summary>Stops the loader thread (a load in progress finishes first).</summary>
+    public void Dispose()
+    {
+        lock (_streamingLock)
+        {
+            _stopping = true;
+            Monitor.PulseAll(_streamingLock);
+        }
+
+        _loader.Join();
+    }
+
+    /// <summary>
+    /// Registers a loaded landblock: builds its <see cref="TerrainSurface"/> (the game's triangles,
+    /// from the landblock id) and one <see cref="CellSurface"/> per cell whose environment and cell
+    /// struct resolve, and calls <see cref="PhysicsEngine.AddLandblock"/>. A cell that cannot be
+    /// built is skipped with a warning naming it and the reason.
+    /// </summary>
+    /// <returns>False, with the reason, when the landblock itself cannot be registered; the engine is then unchanged.</returns>
+    internal bool ApplyLoadedTerrainLocked(uint landblockId, LoadedLandblock loaded, out string? error)
+    {
+        uint id = (landblockId & 0xFFFF0000u) | 0xFFFF;
+        error = null;
+        if (loaded.LandBlock is null || ((loaded.LandBlock.Id & 0xFFFF0000u) | 0xFFFF) != id)
+        {
+            error = $"the source returned landblock 0x{loaded.LandBlock?.Id ?? 0:X8}";
+            return false;
+        }
+
+        TerrainSurface terrain;
+        try
+        {
+            terrain = new TerrainSurface(loaded.LandBlock.Height, _heightTable, id);
+        }
+        catch (ArgumentException e)
+        {
+            error = e.Message;
+            return false;
+        }
+
+        var cells = new List<CellSurface>();
+        var ids = new HashSet<uint>();
+        foreach (EnvCell? envCell in loaded.EnvCells ?? [])
+        {
+            string? problem = CellProblem(id, envCell, loaded.Environments, ids, out CellSurface? cell);
+            if (problem is null)
+            {
+                cells.Add(cell!);
+                ids.Add(cell!.CellId);
+            }
+            else
+            {
+                _log($"landblock 0x{id:X8}: cell 0x{envCell?.Id ?? 0:X8} skipped: {problem}");
+            }
+        }
+
+        try
+        {
+            Physics.AddLandblock(id, terrain, cells);
+        }
+        catch (ArgumentException e)
+        {
+            error = e.Message;
+            return false;
+        }
+
+        if (_loaded.Add(id))
+        {
+            LandblockLoaded?.Invoke(id);
+        }
+
+        return true;
+    }
+
+    /// <summary>The unload path: removes a landblock from the engine (nothing happens if it is not registered).</summary>
+    internal void UnloadLandblockLocked(uint landblockId)
+    {
+        uint id = (landblockId & 0xFFFF0000u) | 0xFFFF;
+        Physics.RemoveLandblock(id);
+        if (_loaded.Remove(id))
+        {
+            LandblockUnloaded?.Invoke(id);
+        }
+    }
+
+    private static string? CellProblem(uint landblockId, EnvCell? envCell, IReadOnlyDictionary<uint, Environment>? environments, HashSet<uint> ids, out CellSurface? cell)
+    {
+        cell = null;
+        if (envCell is null)
+        {
+            return "the cell is null";
+        }
+
+        if ((envCell.Id & 0xFFFF0000u) != (landblockId & 0xFFFF0000u))
+        {
+            return "the cell belongs to another landblock";
+        }
+
+        if (ids.Contains(envCell.Id))
+        {
+            return "the cell is listed twice";
+        }
+
+        uint environmentId = 0x0D000000u | envCell.EnvironmentId;
+        if (environments is null || !environments.TryGetValue(environmentId, out Environment? environment) || environment is null)
+        {
+            return $"environment 0x{environmentId:X8} is missing";
+        }
+
+        if (environment.Cells is null || !environment.Cells.TryGetValue(envCell.CellStructure, out CellStruct? cellStruct) || cellStruct is null)
+        {
+            return $"cell struct {envCell.CellStructure} is missing from environment 0x{environmentId:X8}";
+        }
+
+        try
+        {
+            cell = new CellSurface(envCell.Id, envCell, cellStruct);
+            return null;
+        }
+        catch (ArgumentException e)
+        {
+            return e.Message;
+        }
+    }
+
+    private static int Chebyshev(uint id, int cx, int cy) =>
+        Math.Max(Math.Abs((int)(id >> 24) - cx), Math.Abs((int)((id >> 16) & 0xFF) - cy));
+
+    private void LoaderLoop()
+    {
+        while (true)
+        {
+            uint id;
+            lock (_streamingLock)
+            {
+                while (_requests.Count == 0 && !_stopping)
+                {
+                    Monitor.Wait(_streamingLock);
+                }
+
+                if (_stopping)
+                {
+                    return;
+                }
+
+                id = _requests.Dequeue();
+            }
+
+            LoadedLandblock? loaded = null;
+            string? error = null;
+            try
+            {
+                loaded = _source.Load(id) ?? throw new InvalidDataException("the source returned nothing");
+            }
+#pragma warning disable CA1031 // any failure of the source is a failed load, reported and retried by the frame loop
+            catch (Exception e)
+#pragma warning restore CA1031
+            {
+                error = e.Message;
+            }
+
+            lock (_streamingLock)
+            {
+                _completed.Enqueue((id, loaded, error));
+                Monitor.PulseAll(_streamingLock);
+            }
+        }
+    }
+}

@@ -1,0 +1,133 @@
+using System.Globalization;
+using System.Text;
+using System.Xml;
+using AcDream.App.Scenes;
+using AcDream.App.World;
+
+namespace AcDream.App;
+
+/// <summary>
+/// The main job: runs a scene (the embedded Holtburg walk by default), prints the summary and writes
+/// the SVG. Exit status 0 on success, 2 on a bad option or scene file, 1 when the SVG cannot be written.
+/// </summary>
+internal static class MainJob
+{
+    /// <summary>Exit status for bad input (options or scene file).</summary>
+    public const int BadInput = 2;
+
+    /// <summary>Usage text for <c>--help</c>.</summary>
+    public const string Usage = """
+        Usage: dotnet run --project src/AcDream.App -- [options]
+
+        Runs a scripted walk through the physics engine, headless, and prints what happened:
+        the cells visited, refused moves, airborne frames, landblocks streamed, the end point.
+        Writes an SVG (top-down map and Z profile) to the output folder.
+
+        Options:
+          --scene FILE   run this scene file (JSON, see docs/scenes.md) instead of the
+                         embedded Holtburg walk
+          --out DIR      folder for the SVG (default: out)
+          --frames N     stop after N frames (30 frames = 1 s)
+          --quiet        print only the SVG path
+          --help         print this text
+
+        Exit status: 0 done, 1 the SVG could not be written, 2 a bad option or scene file.
+        """;
+
+    /// <summary>Runs the job with command-line <paramref name="args"/>; returns the exit status.</summary>
+    public static int Run(string[] args, TextWriter output, TextWriter error)
+    {
+        string? scenePath = null, outDir = null;
+        int? frames = null;
+        bool quiet = false;
+        for (int i = 0; i < args.Length; i++)
+        {
+            string arg = args[i];
+            switch (arg)
+            {
+                case "--help" or "-h":
+                    output.Write(Usage);
+                    output.WriteLine();
+                    return 0;
+                case "--quiet":
+                    quiet = true;
+                    break;
+                case "--scene" or "--out" or "--frames":
+                    if (i + 1 >= args.Length || args[i + 1].StartsWith("--", StringComparison.Ordinal))
+                    {
+                        return Fail(error, $"option {arg} needs a value ({(arg == "--frames" ? "a number of frames" : arg == "--out" ? "a folder" : "a scene file")}).");
+                    }
+
+                    string value = args[++i];
+                    if (arg == "--scene")
+                    {
+                        scenePath = value;
+                    }
+                    else if (arg == "--out")
+                    {
+                        outDir = value;
+                    }
+                    else if (int.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out int n) && n > 0)
+                    {
+                        frames = n;
+                    }
+                    else
+                    {
+                        return Fail(error, $"option --frames: \"{value}\" is not a whole number of frames > 0.");
+                    }
+
+                    break;
+                default:
+                    return Fail(error, $"unknown option \"{arg}\".");
+            }
+        }
+
+        Scene scene;
+        try
+        {
+            scene = scenePath is null ? SceneReader.ReadDefault() : SceneReader.ReadFile(scenePath);
+        }
+        catch (SceneFormatException e)
+        {
+            error.WriteLine($"error: scene {e.Message}");
+            return BadInput;
+        }
+
+        var world = new HoltburgWorld();
+        WalkRecord record = SceneRunner.Run(scene, world, frames);
+
+        string svgPath = Path.GetFullPath(Path.Combine(outDir ?? "out", FileName(scene.Name) + ".svg"));
+        try
+        {
+            Directory.CreateDirectory(Path.GetDirectoryName(svgPath)!);
+            using var writer = XmlWriter.Create(svgPath, new XmlWriterSettings { Encoding = new UTF8Encoding(false), Indent = true });
+            WalkSvg.Build(record, world).Save(writer);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            error.WriteLine($"error: cannot write the SVG {svgPath}: {e.Message}");
+            return 1;
+        }
+
+        output.Write(quiet ? $"SVG: {svgPath}{System.Environment.NewLine}" : WalkReport.Format(record, svgPath));
+        return 0;
+    }
+
+    private static int Fail(TextWriter error, string message)
+    {
+        error.WriteLine($"error: {message} Run with --help for the options.");
+        return BadInput;
+    }
+
+    /// <summary>A file name from a scene name: letters and digits kept, the rest '-'.</summary>
+    private static string FileName(string name)
+    {
+        var text = new StringBuilder();
+        foreach (char c in name.ToLowerInvariant())
+        {
+            text.Append(char.IsAsciiLetterOrDigit(c) ? c : '-');
+        }
+
+        return text.ToString().Trim('-') is { Length: > 0 } file ? file : "scene";
+    }
+}

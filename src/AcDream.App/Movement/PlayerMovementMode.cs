@@ -1,0 +1,166 @@
+using System.Numerics;
+using AcDream.Core.Physics;
+
+namespace AcDream.App.Movement;
+
+/// <summary>
+/// The Phase B.2 seam: each frame turns the player's intent into a horizontal move, resolves it with
+/// <see cref="PhysicsEngine.Resolve(Vector3, uint, Vector3, float)"/> and keeps the resulting position and cell. While the engine
+/// reports no ground, a vertical speed accumulates under gravity and lowers the mover; it lands when
+/// the engine finds ground at the falling mover's height.
+/// </summary>
+/// <remarks>
+/// Positions are world metres in the engine's frame. Heading is a compass angle in radians: 0 faces
+/// north (+Y), π/2 east (+X). A frame longer than <see cref="MaxStepSeconds"/> is split into equal
+/// steps no longer than that, so a slow frame does not make one long move through walls or up slopes.
+/// The engine moves Z only to the ground it finds; a drop onto lower ground (the cellar under a shaft)
+/// is therefore a snap, not a fall.
+/// </remarks>
+public sealed class PlayerMovementMode
+{
+    /// <summary>Walking speed: 2 m/s (a placeholder until B.2 reads the player's setup).</summary>
+    public const float WalkSpeed = 2f;
+
+    /// <summary>Running speed: 4 m/s (a placeholder until B.2 reads the player's setup).</summary>
+    public const float RunSpeed = 4f;
+
+    /// <summary>Turning speed: π/2 rad/s (90° per second).</summary>
+    public const float TurnRate = MathF.PI / 2f;
+
+    /// <summary>Highest rise one step may climb: 0.5 m (acdream's player uses 0.4–0.6 m).</summary>
+    public const float StepUpHeight = 0.5f;
+
+    /// <summary>Gravity: −9.8 m/s² along Z.</summary>
+    public const float Gravity = -9.8f;
+
+    /// <summary>Fastest fall: 50 m/s.</summary>
+    public const float MaxFallSpeed = 50f;
+
+    /// <summary>Longest physics step: 0.1 s.</summary>
+    public const float MaxStepSeconds = 0.1f;
+
+    private readonly PhysicsEngine _engine;
+
+    /// <summary>Places the mover; it starts on the ground, not moving vertically.</summary>
+    /// <param name="engine">The engine to resolve against.</param>
+    /// <param name="position">Feet position, world metres.</param>
+    /// <param name="cellId">The cell at <paramref name="position"/> (<c>0xXXYYCCCC</c>); for outdoors any outdoor number works, the engine recomputes it.</param>
+    /// <param name="heading">Compass heading, radians (0 north, π/2 east).</param>
+    /// <exception cref="ArgumentException">The position or heading is not finite.</exception>
+    public PlayerMovementMode(PhysicsEngine engine, Vector3 position, uint cellId, float heading)
+    {
+        ArgumentNullException.ThrowIfNull(engine);
+        if (!float.IsFinite(position.X) || !float.IsFinite(position.Y) || !float.IsFinite(position.Z) || !float.IsFinite(heading))
+        {
+            throw new ArgumentException($"position {position} and heading {heading} must be finite.");
+        }
+
+        _engine = engine;
+        Position = position;
+        CellId = cellId;
+        Heading = heading;
+        IsOnGround = true;
+    }
+
+    /// <summary>Feet position, world metres.</summary>
+    public Vector3 Position { get; private set; }
+
+    /// <summary>The cell the mover is in, <c>0xXXYYCCCC</c>.</summary>
+    public uint CellId { get; private set; }
+
+    /// <summary>Compass heading, radians in [0, 2π): 0 north, π/2 east. A script or mouse-look may set it directly.</summary>
+    public float Heading
+    {
+        get;
+        set => field = float.IsFinite(value) ? WrapAngle(value) : throw new ArgumentException($"heading {value} must be finite.", nameof(value));
+    }
+
+    /// <summary>Whether the last step stood on terrain or a floor.</summary>
+    public bool IsOnGround { get; private set; }
+
+    /// <summary>Vertical speed, m/s (negative: falling); 0 on the ground, never below −<see cref="MaxFallSpeed"/>.</summary>
+    public float VerticalSpeed { get; private set; }
+
+    /// <summary>
+    /// Advances one frame: turns, moves and resolves, in steps of at most <see cref="MaxStepSeconds"/>.
+    /// </summary>
+    /// <param name="intent">The player's intent, held for the whole frame.</param>
+    /// <param name="frameSeconds">Frame time, seconds, ≥ 0 (fixed or variable).</param>
+    /// <returns>How many steps ran and which were refused.</returns>
+    /// <exception cref="ArgumentOutOfRangeException">The frame time is negative or not finite.</exception>
+    public MovementFrame Update(MovementIntent intent, float frameSeconds)
+    {
+        if (!float.IsFinite(frameSeconds) || frameSeconds < 0f)
+        {
+            throw new ArgumentOutOfRangeException(nameof(frameSeconds), frameSeconds, "frame time must be a finite number of seconds ≥ 0.");
+        }
+
+        if (frameSeconds == 0f)
+        {
+            return default;
+        }
+
+        int steps = Math.Max(1, (int)MathF.Ceiling(frameSeconds / MaxStepSeconds));
+        float dt = frameSeconds / steps;
+        int rejected = 0;
+        Vector3 rejectedFrom = default, rejectedDelta = default;
+        uint rejectedCell = 0;
+        for (int i = 0; i < steps; i++)
+        {
+            Vector3 from = Position;
+            uint fromCell = CellId;
+            Vector3 delta = Step(intent, dt);
+            if (delta != Vector3.Zero && Position.X == from.X && Position.Y == from.Y)
+            {
+                rejected++;
+                rejectedFrom = from;
+                rejectedCell = fromCell;
+                rejectedDelta = delta;
+            }
+        }
+
+        return new MovementFrame(steps, rejected, rejectedFrom, rejectedCell, rejectedDelta);
+    }
+
+    /// <summary>One step of <paramref name="dt"/> seconds; returns the horizontal move asked for.</summary>
+    private Vector3 Step(MovementIntent intent, float dt)
+    {
+        Heading += Math.Clamp(intent.Turn, -1f, 1f) * TurnRate * dt;
+        (float sin, float cos) = MathF.SinCos(Heading);
+        var forward = new Vector2(sin, cos);
+        var right = new Vector2(cos, -sin);
+        Vector2 move = (forward * Math.Clamp(intent.Forward, -1f, 1f)) + (right * Math.Clamp(intent.Strafe, -1f, 1f));
+        if (move.LengthSquared() > 1f)
+        {
+            move = Vector2.Normalize(move); // diagonal moves are no faster
+        }
+
+        Vector2 horizontal = move * ((intent.Run ? RunSpeed : WalkSpeed) * dt);
+        var delta = new Vector3(horizontal, 0f);
+
+        Vector3 position = Position;
+        if (!IsOnGround)
+        {
+            VerticalSpeed = MathF.Max(VerticalSpeed + (Gravity * dt), -MaxFallSpeed);
+            position.Z += VerticalSpeed * dt;
+        }
+
+        ResolveResult result = _engine.Resolve(position, CellId, delta, StepUpHeight);
+        Position = result.Position;
+        CellId = result.CellId;
+        IsOnGround = result.IsOnGround;
+        if (IsOnGround)
+        {
+            VerticalSpeed = 0f;
+        }
+
+        return delta;
+    }
+
+    private static float WrapAngle(float radians)
+    {
+        float wrapped = radians % MathF.Tau;
+        wrapped = wrapped < 0f ? wrapped + MathF.Tau : wrapped;
+        return wrapped < MathF.Tau ? wrapped : 0f;
+    }
+}

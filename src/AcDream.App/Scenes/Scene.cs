@@ -1,0 +1,12 @@
+using System.Numerics;
+
+namespace AcDream.App.Scenes;
+
+/// <summary>A scripted walk over the Holtburg world (format: <c>docs/scenes.md</c>).</summary>
+/// <param name="Name">Shown in the summary and used for the SVG's file name.</param>
+/// <param name="Source">Where the scene came from (a path, or "embedded default").</param>
+/// <param name="Start">Start point, world metres (world (0, 0) = south-west corner of 0xA9B4); the mover starts on the ground there.</param>
+/// <param name="StartHeadingDegrees">Compass heading at the start, degrees (0 north, 90 east).</param>
+/// <param name="Legs">The legs, run in order.</param>
+/// <param name="Notes">Lines printed under the summary.</param>
+internal sealed record Scene(string Name, string Source, Vector2 Start, float StartHeadingDegrees, IReadOnlyList<SceneLeg> Legs, IReadOnlyList<string> Notes);

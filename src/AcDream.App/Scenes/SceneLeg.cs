@@ -1,0 +1,17 @@
+using System.Numerics;
+
+namespace AcDream.App.Scenes;
+
+/// <summary>
+/// One leg of a scene: either walk to a point (<see cref="To"/> set; the mover faces it each frame
+/// and slows to land on it), or hold an intent (forward, strafe, turn) for <see cref="Seconds"/>.
+/// </summary>
+/// <param name="Name">Shown in the summary.</param>
+/// <param name="To">Target point, world metres; null for an intent leg.</param>
+/// <param name="Forward">Intent leg: −1..1.</param>
+/// <param name="Strafe">Intent leg: −1..1, + right.</param>
+/// <param name="Turn">Intent leg: −1..1, + clockwise.</param>
+/// <param name="Run">Run speed instead of walk speed.</param>
+/// <param name="Backward">Point leg: walk there backwards, facing away from it.</param>
+/// <param name="Seconds">Intent leg: its length; point leg: the time limit after which it stops unreached.</param>
+internal sealed record SceneLeg(string Name, Vector2? To, float Forward, float Strafe, float Turn, bool Run, bool Backward, float Seconds);

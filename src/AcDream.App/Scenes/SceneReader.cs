@@ -1,0 +1,247 @@
+using System.Globalization;
+using System.Numerics;
+using System.Reflection;
+using System.Text.Json;
+
+namespace AcDream.App.Scenes;
+
+/// <summary>Reads scene files (JSON, <c>docs/scenes.md</c>), checking every field.</summary>
+internal static class SceneReader
+{
+    /// <summary>Resource name of the embedded default scene (<c>Scenes/holtburg-walk.json</c>).</summary>
+    public const string DefaultResource = "scenes/holtburg-walk.json";
+
+    /// <summary>Default time limit of a point leg, seconds.</summary>
+    public const float DefaultPointLegSeconds = 60f;
+
+    /// <summary>Longest leg, seconds.</summary>
+    public const float MaxLegSeconds = 600f;
+
+    /// <summary>How far from 0xA9B4's corner a start may be, metres: the 3 × 3 landblocks around Holtburg and one more ring (the world is bigger, the walk is not).</summary>
+    public const float MaxStartDistance = 2 * 192f;
+
+    private static readonly string[] SceneFields = ["name", "start", "legs", "notes"];
+    private static readonly string[] StartFields = ["position", "heading"];
+    private static readonly string[] LegFields = ["name", "to", "forward", "strafe", "turn", "run", "backward", "seconds"];
+
+    /// <summary>The embedded default scene.</summary>
+    public static Scene ReadDefault()
+    {
+        using Stream stream = Assembly.GetExecutingAssembly().GetManifestResourceStream(DefaultResource)
+            ?? throw new InvalidOperationException($"the program lacks its embedded resource {DefaultResource}.");
+        using var reader = new StreamReader(stream);
+        return Parse(reader.ReadToEnd(), "embedded default (src/AcDream.App/Scenes/holtburg-walk.json)");
+    }
+
+    /// <summary>Reads a scene file.</summary>
+    /// <exception cref="SceneFormatException">The file cannot be read or is not a valid scene.</exception>
+    public static Scene ReadFile(string path)
+    {
+        string text;
+        try
+        {
+            text = File.ReadAllText(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
+        {
+            throw new SceneFormatException($"{path}: cannot read the scene file ({e.Message})");
+        }
+
+        return Parse(text, path);
+    }
+
+    /// <summary>Parses scene text; <paramref name="source"/> names it in errors.</summary>
+    /// <exception cref="SceneFormatException">The text is not a valid scene.</exception>
+    public static Scene Parse(string json, string source)
+    {
+        JsonDocument document;
+        try
+        {
+            document = JsonDocument.Parse(json, new JsonDocumentOptions { CommentHandling = JsonCommentHandling.Skip, AllowTrailingCommas = true });
+        }
+        catch (JsonException e)
+        {
+            throw new SceneFormatException($"{source}: not valid JSON (line {e.LineNumber + 1}, byte {e.BytePositionInLine + 1}): {e.Message}");
+        }
+
+        using (document)
+        {
+            var context = new Context(source);
+            JsonElement root = document.RootElement;
+            context.RequireObject(root, "(top level)", SceneFields);
+            string name = context.RequireString(root, "name", "name");
+            JsonElement start = context.Require(root, "start", "start");
+            context.RequireObject(start, "start", StartFields);
+            Vector2 position = context.RequirePoint(start, "position", "start.position");
+            if (MathF.Abs(position.X - 96f) > MaxStartDistance || MathF.Abs(position.Y - 96f) > MaxStartDistance)
+            {
+                throw context.Error("start.position", start.GetProperty("position"), $"must be within {MaxStartDistance} m of Holtburg's centre (96, 96)");
+            }
+
+            float heading = context.OptionalNumber(start, "heading", "start.heading", 0f, -360f, 360f);
+
+            JsonElement legsElement = context.Require(root, "legs", "legs");
+            if (legsElement.ValueKind != JsonValueKind.Array || legsElement.GetArrayLength() == 0)
+            {
+                throw context.Error("legs", legsElement, "must be a non-empty array of legs");
+            }
+
+            var legs = new List<SceneLeg>();
+            int index = 0;
+            foreach (JsonElement leg in legsElement.EnumerateArray())
+            {
+                legs.Add(ReadLeg(context, leg, $"legs[{index++}]"));
+            }
+
+            var notes = new List<string>();
+            if (root.TryGetProperty("notes", out JsonElement notesElement))
+            {
+                if (notesElement.ValueKind != JsonValueKind.Array)
+                {
+                    throw context.Error("notes", notesElement, "must be an array of strings");
+                }
+
+                int n = 0;
+                foreach (JsonElement note in notesElement.EnumerateArray())
+                {
+                    notes.Add(note.ValueKind == JsonValueKind.String ? note.GetString()! : throw context.Error($"notes[{n}]", note, "must be a string"));
+                    n++;
+                }
+            }
+
+            return new Scene(name, source, position, heading, legs, notes);
+        }
+    }
+
+    private static SceneLeg ReadLeg(Context context, JsonElement leg, string path)
+    {
+        context.RequireObject(leg, path, LegFields);
+        string name = context.RequireString(leg, "name", $"{path}.name");
+        bool run = context.OptionalBool(leg, "run", $"{path}.run");
+        bool backward = context.OptionalBool(leg, "backward", $"{path}.backward");
+
+        bool hasIntent = leg.TryGetProperty("forward", out _) || leg.TryGetProperty("strafe", out _) || leg.TryGetProperty("turn", out _);
+        if (leg.TryGetProperty("to", out _))
+        {
+            if (hasIntent)
+            {
+                throw context.Error(path, leg, "has \"to\" and an intent (forward/strafe/turn); a leg is one or the other");
+            }
+
+            Vector2 to = context.RequirePoint(leg, "to", $"{path}.to");
+            float limit = context.OptionalNumber(leg, "seconds", $"{path}.seconds", DefaultPointLegSeconds, float.Epsilon, MaxLegSeconds);
+            return new SceneLeg(name, to, 0f, 0f, 0f, run, backward, limit);
+        }
+
+        if (leg.TryGetProperty("backward", out JsonElement backwardElement))
+        {
+            throw context.Error($"{path}.backward", backwardElement, "applies only to a leg with \"to\" (use \"forward\": -1 here)");
+        }
+
+        if (!hasIntent)
+        {
+            throw context.Error(path, leg, "needs \"to\" (walk to a point) or at least one of \"forward\", \"strafe\", \"turn\"");
+        }
+
+        float forward = context.OptionalNumber(leg, "forward", $"{path}.forward", 0f, -1f, 1f);
+        float strafe = context.OptionalNumber(leg, "strafe", $"{path}.strafe", 0f, -1f, 1f);
+        float turn = context.OptionalNumber(leg, "turn", $"{path}.turn", 0f, -1f, 1f);
+        if (!leg.TryGetProperty("seconds", out _))
+        {
+            throw context.Error($"{path}.seconds", leg, "is required for a leg without \"to\"");
+        }
+
+        float seconds = context.OptionalNumber(leg, "seconds", $"{path}.seconds", 0f, float.Epsilon, MaxLegSeconds);
+        return new SceneLeg(name, null, forward, strafe, turn, run, false, seconds);
+    }
+
+    /// <summary>Error helpers that name the source, the field and the value.</summary>
+    private sealed class Context(string source)
+    {
+        public SceneFormatException Error(string field, JsonElement value, string problem)
+        {
+            string text = value.ValueKind == JsonValueKind.Undefined ? "nothing" : value.GetRawText();
+            text = text.ReplaceLineEndings(" ");
+            if (text.Length > 80)
+            {
+                text = string.Concat(text.AsSpan(0, 77), "...");
+            }
+
+            return new SceneFormatException($"{source}: field {field}: {problem}; got {text}");
+        }
+
+        public void RequireObject(JsonElement element, string path, string[] allowed)
+        {
+            if (element.ValueKind != JsonValueKind.Object)
+            {
+                throw Error(path, element, "must be a JSON object");
+            }
+
+            foreach (JsonProperty property in element.EnumerateObject())
+            {
+                if (Array.IndexOf(allowed, property.Name) < 0)
+                {
+                    string field = path == "(top level)" ? property.Name : $"{path}.{property.Name}";
+                    throw Error(field, property.Value, $"unknown field (allowed: {string.Join(", ", allowed)})");
+                }
+            }
+        }
+
+        public JsonElement Require(JsonElement parent, string name, string path) =>
+            parent.TryGetProperty(name, out JsonElement value) ? value : throw Error(path, default, "is missing");
+
+        public string RequireString(JsonElement parent, string name, string path)
+        {
+            JsonElement value = Require(parent, name, path);
+            return value.ValueKind == JsonValueKind.String && !string.IsNullOrWhiteSpace(value.GetString())
+                ? value.GetString()!
+                : throw Error(path, value, "must be a non-empty string");
+        }
+
+        public Vector2 RequirePoint(JsonElement parent, string name, string path)
+        {
+            JsonElement value = Require(parent, name, path);
+            if (value.ValueKind != JsonValueKind.Array || value.GetArrayLength() != 2
+                || value[0].ValueKind != JsonValueKind.Number || value[1].ValueKind != JsonValueKind.Number
+                || !float.IsFinite(value[0].GetSingle()) || !float.IsFinite(value[1].GetSingle()))
+            {
+                throw Error(path, value, "must be [x, y], two numbers in metres");
+            }
+
+            return new Vector2(value[0].GetSingle(), value[1].GetSingle());
+        }
+
+        public bool OptionalBool(JsonElement parent, string name, string path)
+        {
+            if (!parent.TryGetProperty(name, out JsonElement value))
+            {
+                return false;
+            }
+
+            return value.ValueKind switch
+            {
+                JsonValueKind.True => true,
+                JsonValueKind.False => false,
+                _ => throw Error(path, value, "must be true or false"),
+            };
+        }
+
+        public float OptionalNumber(JsonElement parent, string name, string path, float fallback, float min, float max)
+        {
+            if (!parent.TryGetProperty(name, out JsonElement value))
+            {
+                return fallback;
+            }
+
+            if (value.ValueKind != JsonValueKind.Number || !float.IsFinite(value.GetSingle()))
+            {
+                throw Error(path, value, "must be a number");
+            }
+
+            float number = value.GetSingle();
+            return number >= min && number <= max
+                ? number
+                : throw Error(path, value, string.Create(CultureInfo.InvariantCulture, $"must be between {(min == float.Epsilon ? "0 (exclusive)" : min.ToString(CultureInfo.InvariantCulture))} and {max}"));
+        }
+    }
+}

@@ -1,0 +1,107 @@
+using System.Globalization;
+using System.Text;
+using AcDream.App.Movement;
+using AcDream.App.World;
+
+namespace AcDream.App.Scenes;
+
+/// <summary>The summary a person reads after a run: cells, refusals, airborne frames, streaming, the end.</summary>
+internal static class WalkReport
+{
+    /// <summary>Formats <paramref name="record"/>; <paramref name="svgPath"/> is printed last.</summary>
+    public static string Format(WalkRecord record, string svgPath)
+    {
+        var text = new StringBuilder();
+        void Line(FormattableString line) => text.AppendLine(line.ToString(CultureInfo.InvariantCulture));
+
+        int frames = record.Final.Frame;
+        Line($"Scene \"{record.Scene.Name}\" ({record.Scene.Source}): {frames} frames at {SceneRunner.FramesPerSecond} Hz, {frames / (float)SceneRunner.FramesPerSecond:F1} s simulated{(record.Truncated ? ", stopped early by --frames" : "")}.");
+        text.AppendLine();
+
+        Line($"Cells visited (frame entered):");
+        IReadOnlyList<(int Frame, uint CellId)> visits = record.CellVisits();
+        for (int i = 0; i < visits.Count; i++)
+        {
+            (int frame, uint cell) = visits[i];
+            if ((cell & 0xFFFF) < 0x0100)
+            {
+                // A run of outdoor cells is one line.
+                int j = i;
+                while (j + 1 < visits.Count && (visits[j + 1].CellId & 0xFFFF) < 0x0100)
+                {
+                    j++;
+                }
+
+                string seams = string.Join(", ", Seams(visits, i, j));
+                Line($"  {frame,5}  outdoors, {j - i + 1} cell{(j > i ? "s" : "")} 0x{cell:X8}{(j > i ? $" .. 0x{visits[j].CellId:X8}" : "")}{(seams.Length > 0 ? $"; seam {seams}" : "")}");
+                i = j;
+            }
+            else
+            {
+                Line($"  {frame,5}  0x{cell:X8}  {HoltburgWorld.CellName(cell) ?? "indoors"}");
+            }
+        }
+
+        text.AppendLine();
+        Line($"Legs:");
+        int number = 1;
+        foreach (LegResult leg in record.Legs)
+        {
+            string outcome = leg.Leg.To is null ? (leg.Reached ? "done" : "cut short") : (leg.Reached ? "reached" : "NOT reached");
+            string refused = leg.Refusals.Count == 0 ? "" : "; refused " + string.Join(", ", leg.Refusals.OrderBy(r => r.Key).Select(r => $"{r.Value} × {Describe(r.Key)}"));
+            Line($"  {number++,2}. {leg.Leg.Name}: {outcome}, frames {leg.FirstFrame}-{leg.LastFrame}{refused}");
+        }
+
+        text.AppendLine();
+        Line($"Refused moves: {record.RefusalCount(RefusalReason.StepTooHigh)} step too high, {record.RefusalCount(RefusalReason.Wall)} wall, {record.RefusalCount(RefusalReason.UnloadedLand)} unloaded land.");
+        Line($"Airborne: {record.AirborneFrames} frames.");
+        foreach (Drop drop in record.Drops)
+        {
+            Line($"Drop at frame {drop.Frame}: {drop.FromZ:F2} m (0x{drop.FromCellId:X8}) to {drop.ToZ:F2} m (0x{drop.ToCellId:X8}) in one frame; the engine puts the mover on the floor below at once, so there is no fall (a later issue adds one).");
+        }
+
+        int loaded = record.Streaming.Count(e => e.Loaded), unloaded = record.Streaming.Count(e => !e.Loaded);
+        Line($"Landblocks: {loaded} loaded, {unloaded} unloaded (window {2 * GameWindow.StreamingRadius + 1} x {2 * GameWindow.StreamingRadius + 1} around the mover).");
+        foreach (IGrouping<int, StreamingEvent> group in record.Streaming.GroupBy(e => e.Frame))
+        {
+            string @in = string.Join(" ", group.Where(e => e.Loaded).Select(e => $"{e.LandblockId >> 16:X4}"));
+            string @out = string.Join(" ", group.Where(e => !e.Loaded).Select(e => $"{e.LandblockId >> 16:X4}"));
+            Line($"  frame {group.Key,5}: {(@in.Length > 0 ? $"loaded {@in}" : "")}{(@in.Length > 0 && @out.Length > 0 ? "; " : "")}{(@out.Length > 0 ? $"unloaded {@out}" : "")}");
+        }
+
+        foreach (string warning in record.Warnings)
+        {
+            Line($"Warning: {warning}");
+        }
+
+        FrameSample end = record.Final;
+        Line($"Final: ({end.Position.X:F2}, {end.Position.Y:F2}, {end.Position.Z:F2}) m in 0x{end.CellId:X8}{(HoltburgWorld.CellName(end.CellId) is string name ? $" ({name})" : "")}, {(end.IsOnGround ? "on the ground" : "in the air")}.");
+        foreach (string note in record.Scene.Notes)
+        {
+            Line($"Note: {note}");
+        }
+
+        text.AppendLine();
+        Line($"SVG: {svgPath}");
+        return text.ToString();
+    }
+
+    /// <summary>Short text for a refusal reason.</summary>
+    public static string Describe(RefusalReason reason) => reason switch
+    {
+        RefusalReason.StepTooHigh => $"step too high (> {PlayerMovementMode.StepUpHeight} m)",
+        RefusalReason.Wall => "wall",
+        _ => "unloaded land",
+    };
+
+    private static IEnumerable<string> Seams(IReadOnlyList<(int Frame, uint CellId)> visits, int first, int last)
+    {
+        for (int k = first + 1; k <= last; k++)
+        {
+            if ((visits[k].CellId >> 16) != (visits[k - 1].CellId >> 16))
+            {
+                yield return string.Create(CultureInfo.InvariantCulture, $"0x{visits[k - 1].CellId >> 16:X4} -> 0x{visits[k].CellId >> 16:X4} at frame {visits[k].Frame}");
+            }
+        }
+    }
+}

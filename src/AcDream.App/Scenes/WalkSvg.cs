@@ -1,0 +1,308 @@
+using System.Globalization;
+using System.Numerics;
+using System.Text;
+using System.Xml.Linq;
+using AcDream.App.World;
+using AcDream.Core.Dat;
+using AcDream.Core.Physics;
+
+namespace AcDream.App.Scenes;
+
+/// <summary>
+/// Draws a walk as SVG: a top-down map (terrain contours every 2 m, the Holtburg floor plans, the
+/// route coloured by cell, refused moves as red rings) and a side profile of Z over the frames.
+/// </summary>
+internal static class WalkSvg
+{
+    private const float Width = 1000f;
+    private const float Margin = 40f;
+    private const float MapMaxHeight = 620f;
+    private const float ProfileHeight = 220f;
+    private const float ContourInterval = 2f;
+    private static readonly XNamespace Svg = "http://www.w3.org/2000/svg";
+
+    /// <summary>The SVG document for <paramref name="record"/>.</summary>
+    public static XDocument Build(WalkRecord record, HoltburgWorld world)
+    {
+        IReadOnlyList<FrameSample> samples = record.Samples;
+        Dictionary<uint, string> colours = Colours(record);
+
+        // Map extent: the route, padded, in world metres (the engine's frame: 0xA9B4's SW corner is (0, 0)).
+        float minX = samples.Min(s => s.Position.X) - 15f, maxX = samples.Max(s => s.Position.X) + 15f;
+        float minY = samples.Min(s => s.Position.Y) - 15f, maxY = samples.Max(s => s.Position.Y) + 15f;
+        float scale = MathF.Min((Width - (2 * Margin)) / (maxX - minX), MapMaxHeight / (maxY - minY));
+        float mapHeight = (maxY - minY) * scale;
+        float mapTop = Margin;
+        Vector2 Map(float x, float y) => new(Margin + ((x - minX) * scale), mapTop + ((maxY - y) * scale));
+
+        var map = new XElement(Svg + "g", new XAttribute("id", "map"));
+        map.Add(new XElement(Svg + "rect", Attr("x", Margin), Attr("y", mapTop), Attr("width", (maxX - minX) * scale), Attr("height", mapHeight), new XAttribute("fill", "#f4f1e8"), new XAttribute("stroke", "#999")));
+        AddContours(map, world, minX, maxX, minY, maxY, Map);
+        AddFloorPlans(map, world, colours, Map);
+        AddRoute(map, samples, colours, s => Map(s.Position.X, s.Position.Y));
+        foreach (Vector2 p in samples.Where(s => s.Refusal is not null).Select(s => Map(s.Position.X, s.Position.Y)).Distinct())
+        {
+            map.Add(new XElement(Svg + "circle", Attr("cx", p.X), Attr("cy", p.Y), Attr("r", 4f), new XAttribute("fill", "none"), new XAttribute("stroke", "#d00"), Attr("stroke-width", 1.5f)));
+        }
+
+        Vector2 start = Map(samples[0].Position.X, samples[0].Position.Y), end = Map(record.Final.Position.X, record.Final.Position.Y);
+        map.Add(Label(start.X + 5, start.Y - 5, "start", 12));
+        map.Add(Label(end.X + 5, end.Y + 14, "end", 12));
+        map.Add(Label(Margin, mapTop - 8, Invariant($"{record.Scene.Name}: top-down, north up, {ScaleText(scale)}; contours every {ContourInterval} m; red rings: refused moves"), 13));
+
+        // Profile: Z over frames.
+        float profileTop = mapTop + mapHeight + 60f;
+        float minZ = samples.Min(s => s.Position.Z) - 1f, maxZ = samples.Max(s => s.Position.Z) + 1f;
+        int frames = Math.Max(1, record.Final.Frame);
+        Vector2 Profile(int frame, float z) => new(Margin + (frame * (Width - (2 * Margin)) / frames), profileTop + ((maxZ - z) * ProfileHeight / (maxZ - minZ)));
+        var profile = new XElement(Svg + "g", new XAttribute("id", "profile"));
+        profile.Add(new XElement(Svg + "rect", Attr("x", Margin), Attr("y", profileTop), Attr("width", Width - (2 * Margin)), Attr("height", ProfileHeight), new XAttribute("fill", "#fafafa"), new XAttribute("stroke", "#999")));
+        float zStep = NiceStep((maxZ - minZ) / 6f);
+        for (float z = MathF.Ceiling(minZ / zStep) * zStep; z <= maxZ; z += zStep)
+        {
+            Vector2 a = Profile(0, z), b = Profile(frames, z);
+            profile.Add(Line(a, b, "#ddd", 1f));
+            profile.Add(Label(4, a.Y + 4, Invariant($"{z:0.#}"), 10));
+        }
+
+        foreach (LegResult leg in record.Legs)
+        {
+            Vector2 a = Profile(leg.FirstFrame - 1, maxZ), b = Profile(leg.FirstFrame - 1, minZ);
+            profile.Add(Line(a, b, "#ccc", 0.5f));
+        }
+
+        AddRoute(profile, samples, colours, s => Profile(s.Frame, s.Position.Z));
+        profile.Add(Label(Margin, profileTop - 8, Invariant($"Z (m) over frames 0..{frames} at {SceneRunner.FramesPerSecond} Hz; grey lines: leg starts"), 13));
+
+        // Legend: indoor cells.
+        float legendTop = profileTop + ProfileHeight + 30f;
+        var legend = new XElement(Svg + "g", new XAttribute("id", "legend"));
+        float lx = Margin, ly = legendTop;
+        foreach ((uint cell, string colour) in colours.Where(c => (c.Key & 0xFFFF) >= 0x0100))
+        {
+            legend.Add(new XElement(Svg + "rect", Attr("x", lx), Attr("y", ly - 9), Attr("width", 10f), Attr("height", 10f), new XAttribute("fill", colour)));
+            legend.Add(Label(lx + 14, ly, $"0x{cell:X8} {HoltburgWorld.CellName(cell)}", 11));
+            lx += 300f;
+            if (lx > Width - 300f)
+            {
+                lx = Margin;
+                ly += 16f;
+            }
+        }
+
+        legend.Add(Label(lx, ly, "outdoor cells: alternating greys", 11));
+        float height = ly + 20f;
+
+        var root = new XElement(Svg + "svg",
+            new XAttribute("width", Invariant($"{Width}")),
+            new XAttribute("height", Invariant($"{height:0}")),
+            new XAttribute("viewBox", Invariant($"0 0 {Width} {height:0}")),
+            new XAttribute("font-family", "sans-serif"),
+            new XElement(Svg + "rect", Attr("x", 0f), Attr("y", 0f), new XAttribute("width", "100%"), new XAttribute("height", "100%"), new XAttribute("fill", "white")),
+            map,
+            profile,
+            legend);
+        return new XDocument(new XDeclaration("1.0", "utf-8", null), root);
+    }
+
+    /// <summary>Indoor cells get distinct hues in order of first visit; outdoor cells alternate two greys.</summary>
+    private static Dictionary<uint, string> Colours(WalkRecord record)
+    {
+        var colours = new Dictionary<uint, string>();
+        int indoor = 0, outdoor = 0;
+        foreach ((int _, uint cell) in record.CellVisits())
+        {
+            if (colours.ContainsKey(cell))
+            {
+                continue;
+            }
+
+            colours[cell] = (cell & 0xFFFF) >= 0x0100
+                ? Invariant($"hsl({(indoor++ * 137.508) % 360:0},75%,42%)")
+                : (outdoor++ % 2 == 0 ? "#333333" : "#888888");
+        }
+
+        return colours;
+    }
+
+    private static void AddRoute(XElement parent, IReadOnlyList<FrameSample> samples, Dictionary<uint, string> colours, Func<FrameSample, Vector2> place)
+    {
+        int i = 0;
+        while (i < samples.Count)
+        {
+            int j = i;
+            while (j + 1 < samples.Count && samples[j + 1].CellId == samples[i].CellId)
+            {
+                j++;
+            }
+
+            // Each run starts at the previous run's last point, so the line has no gaps.
+            var points = new StringBuilder();
+            for (int k = Math.Max(0, i - 1); k <= j; k++)
+            {
+                Vector2 p = place(samples[k]);
+                points.Append(Invariant($"{p.X:0.##},{p.Y:0.##} "));
+            }
+
+            parent.Add(new XElement(Svg + "polyline",
+                new XAttribute("points", points.ToString().TrimEnd()),
+                new XAttribute("fill", "none"),
+                new XAttribute("stroke", colours[samples[i].CellId]),
+                Attr("stroke-width", 2.5f),
+                new XElement(Svg + "title", $"0x{samples[i].CellId:X8} {HoltburgWorld.CellName(samples[i].CellId)}".TrimEnd())));
+            i = j + 1;
+        }
+    }
+
+    private static void AddFloorPlans(XElement parent, HoltburgWorld world, Dictionary<uint, string> colours, Func<float, float, Vector2> place)
+    {
+        var plans = new XElement(Svg + "g", new XAttribute("id", "floor-plans"));
+        foreach (var cell in world.Cells)
+        {
+            Frame frame = cell.EnvCell.Position;
+            string fill = colours.TryGetValue(cell.CellId, out string? colour) ? colour : "#bbbbbb";
+            foreach (Polygon polygon in cell.CellStruct.PhysicsPolygons.Values)
+            {
+                Vector3[] v = polygon.VertexIds.Select(id => frame.Origin + Vector3.Transform(cell.CellStruct.VertexArray.Vertices[(ushort)id].Origin, frame.Orientation)).ToArray();
+                if (v.Length < 3)
+                {
+                    continue;
+                }
+
+                Vector3 normal = Vector3.Normalize(Vector3.Cross(v[1] - v[0], v[2] - v[0]));
+                string points = string.Join(" ", v.Select(p => place(p.X, p.Y)).Select(p => Invariant($"{p.X:0.##},{p.Y:0.##}")));
+                if (normal.Z >= PhysicsConstants.FloorZ)
+                {
+                    parent.Add(new XElement(Svg + "polygon", new XAttribute("points", points), new XAttribute("fill", fill), Attr("fill-opacity", 0.25f)));
+                }
+                else if (MathF.Abs(normal.Z) < 0.2f)
+                {
+                    plans.Add(new XElement(Svg + "polygon", new XAttribute("points", points), new XAttribute("fill", "none"), new XAttribute("stroke", "#555"), Attr("stroke-width", 0.6f)));
+                }
+            }
+        }
+
+        parent.Add(plans);
+    }
+
+    /// <summary>Marching squares over the terrain, sampled on a grid of about 1.5 px; one path per 2 m level.</summary>
+    private static void AddContours(XElement parent, HoltburgWorld world, float minX, float maxX, float minY, float maxY, Func<float, float, Vector2> place)
+    {
+        var terrains = new Dictionary<uint, TerrainSurface>();
+        float Z(float x, float y)
+        {
+            int lbX = 0xA9 + (int)MathF.Floor(x / 192f), lbY = 0xB4 + (int)MathF.Floor(y / 192f);
+            uint id = ((uint)lbX << 24) | ((uint)lbY << 16) | 0xFFFF;
+            if (!terrains.TryGetValue(id, out TerrainSurface? terrain))
+            {
+                terrains[id] = terrain = world.Terrain(id);
+            }
+
+            return terrain.SampleZ(x - ((lbX - 0xA9) * 192f), y - ((lbY - 0xB4) * 192f));
+        }
+
+        int nx = 240, ny = Math.Max(2, (int)(nx * (maxY - minY) / (maxX - minX)));
+        float dx = (maxX - minX) / nx, dy = (maxY - minY) / ny;
+        var grid = new float[nx + 1, ny + 1];
+        var all = new List<float>();
+        for (int i = 0; i <= nx; i++)
+        {
+            for (int j = 0; j <= ny; j++)
+            {
+                grid[i, j] = Z(minX + (i * dx), minY + (j * dy));
+                all.Add(grid[i, j]);
+            }
+        }
+
+        // Levels between the 2nd and 98th percentile: a needle does not drown the hills in rings.
+        all.Sort();
+        float low = all[all.Count * 2 / 100], high = all[Math.Min(all.Count - 1, all.Count * 98 / 100)];
+        var contours = new XElement(Svg + "g", new XAttribute("id", "contours"), new XAttribute("fill", "none"), new XAttribute("stroke", "#b59b6a"));
+        for (float level = MathF.Ceiling(low / ContourInterval) * ContourInterval; level <= high; level += ContourInterval)
+        {
+            var path = new StringBuilder();
+            for (int i = 0; i < nx; i++)
+            {
+                for (int j = 0; j < ny; j++)
+                {
+                    AddCellSegments(path, level, i, j, grid, minX, minY, dx, dy, place);
+                }
+            }
+
+            if (path.Length > 0)
+            {
+                bool major = MathF.Abs(level % 10f) < 0.01f;
+                contours.Add(new XElement(Svg + "path", new XAttribute("d", path.ToString()), Attr("stroke-width", major ? 1.0f : 0.5f), new XElement(Svg + "title", Invariant($"{level} m"))));
+            }
+        }
+
+        parent.Add(contours);
+        float peak = all[^1];
+        if (peak > high + ContourInterval)
+        {
+            for (int i = 0; i <= nx; i++)
+            {
+                for (int j = 0; j <= ny; j++)
+                {
+                    if (grid[i, j] == peak)
+                    {
+                        Vector2 p = place(minX + (i * dx), minY + (j * dy));
+                        parent.Add(Label(p.X - 4, p.Y + 4, Invariant($"▲ {peak:0} m"), 11));
+                        return;
+                    }
+                }
+            }
+        }
+    }
+
+    private static void AddCellSegments(StringBuilder path, float level, int i, int j, float[,] grid, float minX, float minY, float dx, float dy, Func<float, float, Vector2> place)
+    {
+        float z00 = grid[i, j], z10 = grid[i + 1, j], z01 = grid[i, j + 1], z11 = grid[i + 1, j + 1];
+        Span<Vector2> crossings = stackalloc Vector2[4];
+        int n = 0;
+        float x0 = minX + (i * dx), y0 = minY + (j * dy);
+        void Edge(float za, float zb, Vector2 a, Vector2 b, Span<Vector2> into)
+        {
+            if ((za < level) != (zb < level))
+            {
+                float t = (level - za) / (zb - za);
+                into[n++] = Vector2.Lerp(a, b, t);
+            }
+        }
+
+        Edge(z00, z10, new(x0, y0), new(x0 + dx, y0), crossings);
+        Edge(z10, z11, new(x0 + dx, y0), new(x0 + dx, y0 + dy), crossings);
+        Edge(z11, z01, new(x0 + dx, y0 + dy), new(x0, y0 + dy), crossings);
+        Edge(z01, z00, new(x0, y0 + dy), new(x0, y0), crossings);
+        for (int k = 0; k + 1 < n; k += 2)
+        {
+            Vector2 a = place(crossings[k].X, crossings[k].Y), b = place(crossings[k + 1].X, crossings[k + 1].Y);
+            path.Append(Invariant($"M{a.X:0.#},{a.Y:0.#}L{b.X:0.#},{b.Y:0.#}"));
+        }
+    }
+
+    private static float NiceStep(float rough)
+    {
+        foreach (float step in new[] { 0.5f, 1f, 2f, 5f, 10f, 20f, 50f, 100f })
+        {
+            if (step >= rough)
+            {
+                return step;
+            }
+        }
+
+        return 200f;
+    }
+
+    private static string ScaleText(float pixelsPerMetre) => Invariant($"{pixelsPerMetre:0.##} px per metre");
+
+    private static XElement Line(Vector2 a, Vector2 b, string colour, float width) =>
+        new(Svg + "line", Attr("x1", a.X), Attr("y1", a.Y), Attr("x2", b.X), Attr("y2", b.Y), new XAttribute("stroke", colour), Attr("stroke-width", width));
+
+    private static XElement Label(float x, float y, string text, int size) =>
+        new(Svg + "text", Attr("x", x), Attr("y", y), new XAttribute("font-size", size), text);
+
+    private static XAttribute Attr(string name, float value) => new(name, value.ToString("0.##", CultureInfo.InvariantCulture));
+
+    private static string Invariant(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
+}

@@ -1,0 +1,231 @@
+using System.Numerics;
+using AcDream.App.Movement;
+using AcDream.App.Streaming;
+using AcDream.App.World;
+using AcDream.Core.Dat;
+using AcDream.Core.Physics;
+using Environment = AcDream.Core.Dat.Environment;
+
+namespace AcDream.App.Tests;
+
+public class GameWindowTests
+{
+    private const uint Holtburg = HoltburgWorld.Holtburg;
+    private static readonly TimeSpan Patience = TimeSpan.FromSeconds(20);
+
+    // An outdoor mover just west of the cottage's west door 0x0145 (outdoor portal at x = 136.3), stepping 1 m east onto its floor.
+    private static readonly Vector3 OutsideDoor = new(135.5f, 5.15f, 94f);
+    private static readonly Vector3 IntoDoor = new(1f, 0f, 0f);
+
+    [Fact]
+    public void ApplyLoadedTerrainLocked_HoltburgLandblock_RegistersTerrainAndCells()
+    {
+        var world = new HoltburgWorld();
+        using var window = new GameWindow(world, world.HeightTable, Holtburg);
+
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out string? error).Should().BeTrue($"error: {error}");
+
+        window.Physics.ContainsLandblock(Holtburg).Should().BeTrue();
+        ResolveResult door = window.Physics.Resolve(OutsideDoor, 0xA9B40001u, IntoDoor, 0.5f);
+        door.CellId.Should().Be(0xA9B40145u, $"a step through the west door lands in it, got 0x{door.CellId:X8} at {door.Position}");
+        Vector3.Distance(door.Position, new Vector3(136.5f, 5.15f, 94f)).Should().BeLessThan(1e-4f, $"on the door's floor at 94 m, got {door.Position}");
+        door.IsOnGround.Should().BeTrue();
+
+        ResolveResult room = window.Physics.Resolve(new Vector3(139f, 10f, 94f), 0xA9B40143u, new Vector3(0f, 0.1f, 0f), 0.5f);
+        room.CellId.Should().Be(0xA9B40143u);
+        room.IsOnGround.Should().BeTrue();
+        room.Position.Y.Should().BeApproximately(10.1f, 1e-4f);
+        room.Position.Z.Should().BeApproximately(94f, 1e-4f, "the main room's floor is at 94 m");
+
+        float hill = world.Terrain(Holtburg).SampleZ(60f, 100f);
+        window.Physics.Resolve(new Vector3(60f, 100f, 0f), 0xA9B40001u, Vector3.Zero, 0.5f).Position.Z
+            .Should().Be(hill, "the streamed terrain is the world's terrain");
+    }
+
+    [Fact]
+    public void UnloadLandblockLocked_AfterApply_ResolveNoLongerFindsTerrainOrCells()
+    {
+        var world = new HoltburgWorld();
+        using var window = new GameWindow(world, world.HeightTable, Holtburg);
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+
+        window.UnloadLandblockLocked(Holtburg);
+
+        window.Physics.ContainsLandblock(Holtburg).Should().BeFalse();
+        window.Physics.LandblockCount.Should().Be(0);
+        ResolveResult door = window.Physics.Resolve(OutsideDoor, 0xA9B40001u, IntoDoor, 0.5f);
+        door.Position.Should().Be(OutsideDoor, "with the landblock gone the mover is held where it is");
+        (door.CellId & 0xFFFF).Should().BeLessThan(0x0100u, $"no cell is found any more, got 0x{door.CellId:X8}");
+        ResolveResult room = window.Physics.Resolve(new Vector3(139f, 10f, 94f), 0xA9B40143u, new Vector3(0f, 0.1f, 0f), 0.5f);
+        room.Position.Should().Be(new Vector3(139f, 10f, 94f), "an indoor mover of an unloaded landblock is held too");
+    }
+
+    [Fact]
+    public void ApplyLoadedTerrainLocked_Reload_GivesTheSameAnswersAsTheFirstLoad()
+    {
+        var world = new HoltburgWorld();
+        using var window = new GameWindow(world, world.HeightTable, Holtburg);
+        var random = new Random(11);
+        var queries = Enumerable.Range(0, 200)
+            .Select(_ => (Pos: new Vector3(120f + (random.NextSingle() * 50f), random.NextSingle() * 25f, 94f), Delta: new Vector3((random.NextSingle() - 0.5f) * 2f, (random.NextSingle() - 0.5f) * 2f, 0f)))
+            .ToList();
+
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        var first = queries.Select(q => window.Physics.Resolve(q.Pos, 0xA9B40001u, q.Delta, 0.5f)).ToList();
+        window.UnloadLandblockLocked(Holtburg);
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        var second = queries.Select(q => window.Physics.Resolve(q.Pos, 0xA9B40001u, q.Delta, 0.5f)).ToList();
+
+        second.Should().Equal(first, "a reloaded landblock resolves exactly as the first load did");
+        first.Count(r => (r.CellId & 0xFFFF) >= 0x0100).Should().BeGreaterThan(0, "some queries land indoors, so the cells are compared too");
+    }
+
+    [Fact]
+    public void ApplyLoadedTerrainLocked_CellWithMissingEnvironmentOrBadGeometry_SkipsOnlyThatCellWithWarning()
+    {
+        var world = new HoltburgWorld();
+        var warnings = new List<string>();
+        using var window = new GameWindow(world, world.HeightTable, Holtburg, warnings.Add);
+        LoadedLandblock real = world.Load(Holtburg);
+        var environments = real.Environments.Where(e => e.Key != 0x0D000145u).ToDictionary(e => e.Key, e => e.Value);
+        var broken = new CellStruct();
+        broken.VertexArray.Vertices.Add(0, new SWVertex());
+        broken.VertexArray.Vertices.Add(1, new SWVertex { Origin = Vector3.UnitX });
+        broken.PhysicsPolygons.Add(0, new Polygon { VertexIds = [0, 1] }); // two vertices: not a polygon
+        environments.Add(0x0D000180u, new Environment { Id = 0x0D000180u, Cells = { [0] = broken } });
+        var cells = real.EnvCells.Append(new EnvCell { Id = 0xA9B40180u, EnvironmentId = 0x0180, Position = new Frame() }).ToList();
+
+        window.ApplyLoadedTerrainLocked(Holtburg, new LoadedLandblock(real.LandBlock, cells, environments), out string? error).Should().BeTrue($"error: {error}");
+
+        warnings.Should().HaveCount(2, string.Join(" | ", warnings));
+        warnings.Should().Contain(w => w.Contains("0xA9B40145") && w.Contains("environment 0x0D000145 is missing"), string.Join(" | ", warnings));
+        warnings.Should().Contain(w => w.Contains("0xA9B40180") && w.Contains("polygon"), string.Join(" | ", warnings));
+        ResolveResult door = window.Physics.Resolve(OutsideDoor, 0xA9B40001u, IntoDoor, 0.5f);
+        (door.CellId & 0xFFFF).Should().BeLessThan(0x0100u, $"the skipped door cell is not entered, got 0x{door.CellId:X8}");
+        window.Physics.Resolve(new Vector3(139f, 10f, 94f), 0xA9B40143u, Vector3.Zero, 0.5f).CellId
+            .Should().Be(0xA9B40143u, "the rest of the landblock loaded");
+    }
+
+    [Fact]
+    public void ApplyLoadedTerrainLocked_BadHeights_RegistersNothingAndSaysWhy()
+    {
+        var world = new HoltburgWorld();
+        using var window = new GameWindow(world, world.HeightTable, Holtburg);
+        LoadedLandblock real = world.Load(Holtburg);
+        var bad = new LoadedLandblock(new LandBlock { Id = Holtburg, Height = new byte[80] }, real.EnvCells, real.Environments);
+
+        window.ApplyLoadedTerrainLocked(Holtburg, bad, out string? error).Should().BeFalse();
+
+        error.Should().Contain("81").And.Contain("80");
+        window.Physics.LandblockCount.Should().Be(0, "never half a landblock");
+        window.LoadedLandblocks.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void UpdateStreaming_LandblockFailsToLoad_ReportsItAndRetriesAfterTheDelay()
+    {
+        const uint failing = 0xA9B5FFFFu;
+        var source = new FlatSource(id => id == failing);
+        var log = new List<string>();
+        using var window = new GameWindow(source, TestWorlds.LinearTable(), Holtburg, log.Add);
+        var observer = new Vector3(96f, 96f, 0f);
+
+        window.UpdateStreaming(observer);
+        window.WaitForLoads(Patience).Should().BeTrue();
+        window.UpdateStreaming(observer);
+
+        log.Should().ContainSingle(l => l.Contains("0xA9B5FFFF") && l.Contains("simulated read error"), string.Join(" | ", log));
+        window.Physics.ContainsLandblock(failing).Should().BeFalse();
+        window.Physics.LandblockCount.Should().Be(8, "the other eight landblocks of the window loaded");
+        for (int frame = 0; frame < GameWindow.RetryDelayFrames - 2; frame++)
+        {
+            window.UpdateStreaming(observer);
+            window.WaitForLoads(Patience).Should().BeTrue();
+        }
+
+        source.Calls(failing).Should().Be(1, "no retry before the delay");
+        for (int frame = 0; frame < 4; frame++)
+        {
+            window.UpdateStreaming(observer);
+            window.WaitForLoads(Patience).Should().BeTrue();
+        }
+
+        source.Calls(failing).Should().Be(2, "retried once after the delay");
+        window.Physics.ContainsLandblock(failing).Should().BeTrue("the retry succeeded");
+        window.Physics.LandblockCount.Should().Be(9);
+    }
+
+    [Theory]
+    [InlineData(60f, 100f, 94f, 0xA9B40001u)] // outdoors on a hill
+    [InlineData(139f, 10f, 94f, 0xA9B40143u)] // indoors, the cottage's main room
+    public void PlayerMovementMode_LandblockUnloadedAndReloaded_KeepsAValidPosition(float x, float y, float z, uint cellId)
+    {
+        var world = new HoltburgWorld();
+        using var window = new GameWindow(world, world.HeightTable, Holtburg);
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        var mode = new PlayerMovementMode(window.Physics, new Vector3(x, y, z), cellId, 0f);
+        mode.Update(default, 1f / 30f);
+        Vector3 standing = mode.Position;
+        uint cell = mode.CellId;
+
+        window.UnloadLandblockLocked(Holtburg);
+        var walk = new MovementIntent(1f, 0f, 0f, false);
+        for (int i = 0; i < 30; i++)
+        {
+            mode.Update(walk, 1f / 30f);
+            mode.Position.Should().Be(standing, $"frame {i}: held in place while the land is unloaded");
+            mode.IsOnGround.Should().BeTrue($"frame {i}: held, not falling");
+        }
+
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        mode.Update(default, 1f / 30f);
+        mode.Position.Should().Be(standing, "after the reload the mover stands where it stood");
+        mode.CellId.Should().Be(cell);
+        mode.Update(walk, 1f / 30f);
+        mode.Position.Y.Should().BeApproximately(standing.Y + (PlayerMovementMode.WalkSpeed / 30f), 1e-4f, "and walks on");
+        float.IsFinite(mode.Position.Z).Should().BeTrue();
+        mode.IsOnGround.Should().BeTrue();
+    }
+
+    [Fact]
+    public void UpdateStreaming_TenThousandFramesWhileTheLoaderStreams_NoLandblockLostOrDoubled()
+    {
+        var source = new FlatSource(id => ((id >> 16) % 7) == 3) { Jitter = true }; // some landblocks fail once
+        using var window = new GameWindow(source, TestWorlds.LinearTable(), Holtburg);
+        var registered = new HashSet<uint>();
+        int doubled = 0, lost = 0;
+        window.LandblockLoaded += id => doubled += registered.Add(id) ? 0 : 1;
+        window.LandblockUnloaded += id => lost += registered.Remove(id) ? 0 : 1;
+        PhysicsEngine engine = window.Physics;
+        var mode = new PlayerMovementMode(engine, new Vector3(96f, 96f, 10f), 0xA9B40001u, 0f);
+
+        for (int frame = 0; frame < 10_000; frame++)
+        {
+            // The observer circles 300 m around Holtburg, crossing a seam every few hundred frames.
+            float angle = frame * MathF.Tau / 5000f;
+            var observer = new Vector3(96f + (300f * MathF.Cos(angle)), 96f + (300f * MathF.Sin(angle)), 10f);
+            window.UpdateStreaming(observer);
+            mode.Update(new MovementIntent(1f, 0f, 0.3f, true), 1f / 30f);
+            ResolveResult r = engine.Resolve(observer with { Z = 0f }, 0, new Vector3(0.5f, 0.5f, 0f), 0.5f);
+            float.IsFinite(r.Position.X + r.Position.Y + r.Position.Z).Should().BeTrue($"frame {frame}: {r.Position}");
+            bool here = engine.ContainsLandblock(window.LandblockAt(observer));
+            bool there = engine.ContainsLandblock(window.LandblockAt(observer + new Vector3(0.5f, 0.5f, 0f)));
+            r.Position.Z.Should().Be(here && there ? 10f : 0f, $"frame {frame}: on the flat land (10 m) when it is loaded, held at Z 0 when not; {r}");
+            engine.LandblockCount.Should().Be(window.LoadedLandblocks.Count, $"frame {frame}: the engine holds what the window loaded");
+        }
+
+        for (int settle = 0; settle < 3 * GameWindow.RetryDelayFrames && !window.LoadedLandblocks.ToHashSet().SetEquals(window.WindowLandblocks); settle++)
+        {
+            window.WaitForLoads(Patience).Should().BeTrue();
+            window.UpdateStreaming(new Vector3(396f, 96f, 10f));
+        }
+
+        doubled.Should().Be(0, "no landblock registered twice");
+        lost.Should().Be(0, "no unload of a landblock that was not registered");
+        window.LoadedLandblocks.Should().BeEquivalentTo(window.WindowLandblocks, "at the end the engine holds exactly the window");
+        window.WindowLandblocks.Should().HaveCount(9);
+        engine.LandblockCount.Should().Be(9);
+        window.WindowLandblocks.Should().OnlyContain(id => engine.ContainsLandblock(id));
+        registered.Should().BeEquivalentTo(window.LoadedLandblocks);
+    }
+}

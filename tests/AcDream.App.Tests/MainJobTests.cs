@@ -1,0 +1,152 @@
+using System.Xml.Linq;
+using AcDream.App.Scenes;
+using AcDream.App.World;
+
+namespace AcDream.App.Tests;
+
+public sealed class MainJobTests : IDisposable
+{
+    private readonly string _folder = Path.Combine(Path.GetTempPath(), "acdream-app-tests-" + Guid.NewGuid().ToString("N"));
+
+    public MainJobTests() => Directory.CreateDirectory(_folder);
+
+    public void Dispose() => Directory.Delete(_folder, recursive: true);
+
+    [Fact]
+    public void SceneRunner_DefaultScene_VisitsTheCellsInOrderAndEndsInTheCellar()
+    {
+        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
+
+        var visits = record.CellVisits();
+        var indoor = visits.Select(v => (v.CellId & 0xFFFF) >= 0x0100 ? v.CellId : 0u)
+            .Aggregate(new List<uint>(), (list, c) => { if (list.Count == 0 || list[^1] != c) { list.Add(c); } return list; });
+        indoor.Should().Equal(
+            [0u, 0xA9B40145u, 0xA9B40143u, 0xA9B40145u, 0u, 0xA9B40170u, 0xA9B40171u, 0xA9B40173u, 0xA9B40172u, 0xA9B40173u, 0xA9B40171u, 0xA9B40174u],
+            $"cells visited (0 = outdoors): {string.Join(" ", visits.Select(v => $"{v.Frame}:{v.CellId:X8}"))}");
+        visits.Should().Contain(v => (v.CellId >> 16) == 0xA8B4, "the walk starts west of the seam");
+        record.Final.CellId.Should().Be(0xA9B40174u);
+        record.Final.IsOnGround.Should().BeTrue();
+        record.Final.Position.Z.Should().BeApproximately(90f, 1e-3f, "the cellar floor");
+        record.RefusalCount(RefusalReason.StepTooHigh).Should().BeGreaterThan(0, "the needle and the 1 m step refuse moves");
+        record.RefusalCount(RefusalReason.Wall).Should().BeGreaterThan(0, "the main room's east wall refuses moves");
+        record.Drops.Should().ContainSingle(d => d.ToCellId == 0xA9B40174u && d.FromZ - d.ToZ > 3.9f);
+        record.Streaming.Count(e => e.Loaded).Should().Be(12, "9 at the start and 3 after the seam");
+        record.Streaming.Count(e => !e.Loaded).Should().Be(3);
+        record.Legs.Should().HaveCount(19);
+    }
+
+    [Fact]
+    public void Run_NoArguments_PrintsSummaryAndWritesAWellFormedSvg()
+    {
+        var output = new StringWriter();
+        var error = new StringWriter();
+
+        int status = MainJob.Run(["--out", _folder], output, error);
+
+        status.Should().Be(0, error.ToString());
+        string svg = Path.Combine(_folder, "holtburg-walk.svg");
+        output.ToString().Should().Contain($"SVG: {svg}").And.Contain("Cells visited").And.Contain("0xA9B40174").And.Contain("stairs").And.Contain("Refused moves");
+        XDocument document = XDocument.Load(svg);
+        XNamespace ns = "http://www.w3.org/2000/svg";
+        document.Root!.Name.Should().Be(ns + "svg");
+        document.Descendants(ns + "polyline").Count().Should().BeGreaterThan(20, "the route, one line per cell run, on the map and on the profile");
+        document.Descendants(ns + "path").Should().NotBeEmpty("terrain contours");
+        document.Descendants(ns + "g").Select(g => (string?)g.Attribute("id")).Should().Contain(["map", "profile", "floor-plans", "contours"]);
+    }
+
+    [Fact]
+    public void Run_RepositoryExampleScene_GivesTheSameWalkAsTheDefault()
+    {
+        string file = Path.Combine(RepositoryRoot(), "src", "AcDream.App", "Scenes", "holtburg-walk.json");
+        var output = new StringWriter();
+
+        MainJob.Run(["--scene", file, "--out", _folder, "--quiet"], output, new StringWriter()).Should().Be(0);
+
+        output.ToString().Trim().Should().Be($"SVG: {Path.Combine(_folder, "holtburg-walk.svg")}", "--quiet prints only the path");
+        WalkRecord fromFile = SceneRunner.Run(SceneReader.ReadFile(file), new HoltburgWorld(), 400);
+        WalkRecord embedded = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld(), 400);
+        fromFile.Samples.Should().Equal(embedded.Samples);
+        fromFile.Truncated.Should().BeTrue();
+        fromFile.Final.Frame.Should().Be(400, "--frames stops the walk");
+    }
+
+    [Theory]
+    [InlineData("""{"name": "x", "start": {"position": [0, 0]}, "legs": [{"name": "a", "to": [1, "two"]}]}""", "legs[0].to", "[1, \"two\"]")]
+    [InlineData("""{"name": "x", "start": {"position": [0, 0]}, "legs": [{"name": "a", "forward": 3, "seconds": 1}]}""", "legs[0].forward", "3")]
+    [InlineData("""{"name": "x", "start": {"position": [0, 0]}, "legs": [{"name": "a", "turn": 1}]}""", "legs[0].seconds", "\"turn\"")]
+    [InlineData("""{"name": "x", "start": {"position": [0, 0]}, "legs": [], "speed": 2}""", "speed", "2")]
+    [InlineData("""{"name": "x", "start": {"position": [5000, 0]}, "legs": [{"name": "a", "to": [1, 2]}]}""", "start.position", "[5000, 0]")]
+    [InlineData("""{"name": "x", "legs": [{"name": "a", "to": [1, 2]}]}""", "start", "is missing")]
+    public void Run_BadSceneFile_ExitsTwoNamingFileFieldAndValue(string json, string field, string value)
+    {
+        string file = Path.Combine(_folder, "bad.json");
+        File.WriteAllText(file, json);
+        var error = new StringWriter();
+
+        int status = MainJob.Run(["--scene", file, "--out", _folder], new StringWriter(), error);
+
+        status.Should().Be(2);
+        error.ToString().Should().Contain(file).And.Contain($"field {field}:").And.Contain(value);
+        File.Exists(Path.Combine(_folder, "x.svg")).Should().BeFalse("nothing runs on a bad scene");
+    }
+
+    [Fact]
+    public void Run_SceneFileNotJson_ExitsTwoWithTheLine()
+    {
+        string file = Path.Combine(_folder, "broken.json");
+        File.WriteAllText(file, "{\n  \"name\": \"x\",\n  oops\n}");
+        var error = new StringWriter();
+
+        MainJob.Run(["--scene", file], new StringWriter(), error).Should().Be(2);
+
+        error.ToString().Should().Contain(file).And.Contain("not valid JSON").And.Contain("line 3");
+    }
+
+    [Fact]
+    public void Run_MissingSceneFile_ExitsTwo()
+    {
+        string file = Path.Combine(_folder, "nowhere.json");
+        var error = new StringWriter();
+
+        MainJob.Run(["--scene", file], new StringWriter(), error).Should().Be(2);
+
+        error.ToString().Should().Contain(file).And.Contain("cannot read");
+    }
+
+    [Theory]
+    [InlineData(new[] { "--bogus" }, "\"--bogus\"")]
+    [InlineData(new[] { "--frames", "abc" }, "\"abc\"")]
+    [InlineData(new[] { "--frames", "0" }, "\"0\"")]
+    [InlineData(new[] { "--scene" }, "--scene needs a value")]
+    public void Run_BadOption_ExitsTwoNamingIt(string[] args, string named)
+    {
+        var error = new StringWriter();
+
+        MainJob.Run(args, new StringWriter(), error).Should().Be(2);
+
+        error.ToString().Should().Contain(named).And.Contain("--help");
+    }
+
+    [Fact]
+    public void Run_Help_PrintsUsageAndExitsZero()
+    {
+        var output = new StringWriter();
+
+        MainJob.Run(["--help"], output, new StringWriter()).Should().Be(0);
+
+        output.ToString().Should().Contain("Usage:").And.Contain("--scene FILE").And.Contain("--frames N").And.Contain("--quiet");
+    }
+
+    private static string RepositoryRoot()
+    {
+        for (DirectoryInfo? dir = new(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
+        {
+            if (File.Exists(Path.Combine(dir.FullName, "AcDream.sln")))
+            {
+                return dir.FullName;
+            }
+        }
+
+        throw new InvalidOperationException($"AcDream.sln not found above {AppContext.BaseDirectory}");
+    }
+}

@@ -1,0 +1,228 @@
+using System.Numerics;
+using AcDream.App.Movement;
+using AcDream.App.World;
+using AcDream.Core.Physics;
+using static AcDream.App.Tests.TestWorlds;
+
+namespace AcDream.App.Tests;
+
+public class PlayerMovementModeTests
+{
+    private const float Frame = 1f / 30f;
+    private static readonly MovementIntent Idle = default;
+
+    private static PhysicsEngine Flat(byte index) => Engine(Heights((_, _) => index));
+
+    [Theory]
+    [InlineData(false, PlayerMovementMode.WalkSpeed)]
+    [InlineData(true, PlayerMovementMode.RunSpeed)]
+    public void Update_ForwardForOneSecondOnFlatGround_MovesItsSpeedAlongTheHeading(bool run, float speed)
+    {
+        var mode = new PlayerMovementMode(Flat(50), new Vector3(96f, 96f, 50f), 0xA9B40001u, 0f);
+
+        for (int i = 0; i < 30; i++)
+        {
+            mode.Update(new MovementIntent(1f, 0f, 0f, run), Frame).RejectedSteps.Should().Be(0, $"frame {i}");
+        }
+
+        mode.Position.X.Should().BeApproximately(96f, 1e-4f, "heading 0 is north");
+        mode.Position.Y.Should().BeApproximately(96f + speed, 1e-3f, $"one second at {speed} m/s");
+        mode.Position.Z.Should().Be(50f);
+        mode.CellId.Should().Be(0xA9B40025u, "outdoor cell (4, 4) of Holtburg");
+    }
+
+    [Fact]
+    public void Update_StrafeRightFacingEastThenTurn_MovesSouthAndTurnsNinetyDegreesPerSecond()
+    {
+        var mode = new PlayerMovementMode(Flat(50), new Vector3(96f, 96f, 50f), 0xA9B40001u, MathF.PI / 2f);
+
+        for (int i = 0; i < 30; i++)
+        {
+            mode.Update(new MovementIntent(0f, 1f, 0f, false), Frame);
+        }
+
+        mode.Position.X.Should().BeApproximately(96f, 1e-3f);
+        mode.Position.Y.Should().BeApproximately(96f - PlayerMovementMode.WalkSpeed, 1e-3f, "right of east is south");
+        for (int i = 0; i < 30; i++)
+        {
+            mode.Update(new MovementIntent(0f, 0f, 1f, false), Frame);
+        }
+
+        mode.Heading.Should().BeApproximately(MathF.PI, 1e-4f, "a second of turning right from east faces south");
+        mode.Position.Y.Should().BeApproximately(96f - PlayerMovementMode.WalkSpeed, 1e-3f, "turning in place does not move");
+    }
+
+    [Fact]
+    public void Update_SlopeRisingMoreThanTheStepPerStep_RefusedWhenRunningClimbedWhenWalking()
+    {
+        // Vertex columns 0–1 at 0 m, 2–8 at 100 m: between x = 24 and 48 the ground rises 100 m in 24 m.
+        // Running (0.133 m a frame) that is 0.56 m a step, over the 0.5 m limit; walking, 0.28 m.
+        PhysicsEngine engine = Engine(Heights((x, _) => x >= 2 ? 100 : 0));
+        var runner = new PlayerMovementMode(engine, new Vector3(20f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
+        var walker = new PlayerMovementMode(engine, new Vector3(20f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
+        int refused = 0;
+
+        for (int i = 0; i < 90; i++)
+        {
+            refused += runner.Update(new MovementIntent(1f, 0f, 0f, true), Frame).RejectedSteps;
+            walker.Update(new MovementIntent(1f, 0f, 0f, false), Frame).RejectedSteps.Should().Be(0, $"frame {i}: walking climbs");
+        }
+
+        runner.Position.X.Should().BeInRange(23.8f, 24f, "the runner stops at the foot of the slope");
+        runner.Position.Z.Should().Be(0f);
+        refused.Should().BeGreaterThan(50, "every later running step is refused");
+        walker.Position.X.Should().BeApproximately(20f + (3f * PlayerMovementMode.WalkSpeed), 1e-3f);
+        walker.Position.Z.Should().BeApproximately((walker.Position.X - 24f) * 100f / 24f, 1e-3f, "the walker is on the slope");
+    }
+
+    [Fact]
+    public void Update_LongFrameAtTheSlope_IsSplitIntoStepsSoTheStepLimitStillHolds()
+    {
+        PhysicsEngine engine = Engine(Heights((x, _) => x >= 2 ? 100 : 0));
+        var whole = new PlayerMovementMode(engine, new Vector3(23f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
+        var split = new PlayerMovementMode(engine, new Vector3(23f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
+
+        MovementFrame frame = whole.Update(new MovementIntent(1f, 0f, 0f, false), 1f);
+        for (int i = 0; i < 10; i++)
+        {
+            split.Update(new MovementIntent(1f, 0f, 0f, false), 0.1f);
+        }
+
+        frame.Steps.Should().Be(10, "1 s in steps of at most 0.1 s");
+        whole.Position.Should().Be(split.Position, "a long frame is exactly its steps");
+        frame.RejectedSteps.Should().BeGreaterThan(0, "0.2 m steps rise 0.83 m on the slope: refused");
+        whole.Position.X.Should().BeLessThan(24.2f, $"the long frame did not jump up the slope; at {whole.Position}");
+        whole.Update(Idle, 0.25f).Steps.Should().Be(3, "0.25 s is three steps of 0.083 s");
+    }
+
+    [Fact]
+    public void Update_IndoorStepOfOneMetre_IsRefused()
+    {
+        var world = new HoltburgWorld();
+        var engine = new PhysicsEngine(HoltburgWorld.Holtburg);
+        engine.AddLandblock(HoltburgWorld.Holtburg, world.Terrain(HoltburgWorld.Holtburg), world.Cells.Select(c => new CellSurface(c.CellId, c.EnvCell, c.CellStruct)).ToList());
+        // The cottage's main room 0x0143 (94 m) meets the raised passage 0x0142 (95 m) at y = 13.1.
+        var mode = new PlayerMovementMode(engine, new Vector3(139f, 12.5f, 94f), 0xA9B40143u, 0f);
+
+        int refused = 0;
+        for (int i = 0; i < 30; i++)
+        {
+            refused += mode.Update(new MovementIntent(1f, 0f, 0f, false), Frame).RejectedSteps;
+        }
+
+        mode.CellId.Should().Be(0xA9B40143u);
+        mode.Position.Z.Should().Be(94f);
+        mode.Position.Y.Should().BeLessThanOrEqualTo(13.1f, "stopped at the 1 m step");
+        refused.Should().BeGreaterThan(20);
+    }
+
+    [Fact]
+    public void Update_NoFloorUnderTheMover_GravityAccumulatesUntilTheGroundIsReached()
+    {
+        // A shaft 0x0101 (no floor) over a second shaft 0x0102 (opening at z 0) over a cellar 0x0103
+        // (opening at −5, floor at −5.2). The mover starts 10 m up in the top shaft.
+        var origin = new Vector3(96f, 96f, 0f);
+        PhysicsEngine engine = Engine(
+            Heights((_, _) => 0),
+            Cell(0xA9B40101u, origin, null, (0x0102, 0f, true)),
+            Cell(0xA9B40102u, origin, null, (0x0101, 0f, false), (0x0103, -5f, true)),
+            Cell(0xA9B40103u, origin, -5.2f, (0x0102, -5f, false)));
+        var mode = new PlayerMovementMode(engine, new Vector3(96f, 96f, 10f), 0xA9B40101u, 0f);
+
+        mode.Update(Idle, Frame);
+        mode.IsOnGround.Should().BeFalse("nothing is under the mover");
+        float expectedZ = 10f, expectedSpeed = 0f;
+        int airborne = 0;
+        while (!mode.IsOnGround)
+        {
+            airborne.Should().BeLessThan(200, "the mover must land");
+            expectedSpeed = MathF.Max(expectedSpeed + (PlayerMovementMode.Gravity * Frame), -PlayerMovementMode.MaxFallSpeed);
+            expectedZ += expectedSpeed * Frame;
+            mode.Update(Idle, Frame);
+            airborne++;
+            if (!mode.IsOnGround)
+            {
+                mode.VerticalSpeed.Should().BeApproximately(-9.8f * airborne / 30f, 1e-3f, $"airborne frame {airborne}: speed grows 9.8 m/s each second");
+                mode.Position.Z.Should().BeApproximately(expectedZ, 1e-3f, $"airborne frame {airborne}");
+                mode.CellId.Should().Be(0xA9B40101u);
+            }
+        }
+
+        expectedZ.Should().BeLessThanOrEqualTo(0.5f + 1e-3f, "it lands once it falls to within a step of the opening");
+        airborne.Should().BeGreaterThan(30, "10 m take about 1.4 s");
+        mode.CellId.Should().Be(0xA9B40103u, "landed in the cellar");
+        mode.Position.Z.Should().Be(-5.2f);
+        mode.VerticalSpeed.Should().Be(0f, "gravity stops on the ground");
+        for (int i = 0; i < 100; i++)
+        {
+            mode.Update(Idle, Frame);
+            mode.Position.Z.Should().Be(-5.2f, $"frame {i} after landing");
+            mode.IsOnGround.Should().BeTrue();
+        }
+    }
+
+    [Fact]
+    public void Update_FallingLong_SpeedClampsAtFiftyMetresPerSecond()
+    {
+        PhysicsEngine engine = Engine(Heights((_, _) => 0), Cell(0xA9B40101u, new Vector3(96f, 96f, 0f), null));
+        var mode = new PlayerMovementMode(engine, new Vector3(96f, 96f, 5000f), 0xA9B40101u, 0f);
+
+        for (int i = 0; i < 300; i++)
+        {
+            mode.Update(Idle, Frame);
+            mode.VerticalSpeed.Should().BeGreaterThanOrEqualTo(-PlayerMovementMode.MaxFallSpeed, $"frame {i}");
+        }
+
+        mode.IsOnGround.Should().BeFalse();
+        mode.VerticalSpeed.Should().Be(-PlayerMovementMode.MaxFallSpeed, "after 10 s the unclamped speed would be 98 m/s");
+    }
+
+    [Theory]
+    [InlineData(-30f, 50f, 94f, 0xA8B40001u)] // on a hill west of Holtburg
+    [InlineData(139f, 10f, 94f, 0xA9B40143u)] // the cottage's main room
+    [InlineData(159f, 8.4f, 90f, 0xA9B40174u)] // building B's cellar
+    public void Update_StandingStillTenThousandFrames_DoesNotDrift(float x, float y, float z, uint cellId)
+    {
+        var world = new HoltburgWorld();
+        var engine = new PhysicsEngine(HoltburgWorld.Holtburg);
+        engine.AddLandblock(0xA8B4FFFFu, world.Terrain(0xA8B4FFFFu), []);
+        engine.AddLandblock(HoltburgWorld.Holtburg, world.Terrain(HoltburgWorld.Holtburg), world.Cells.Select(c => new CellSurface(c.CellId, c.EnvCell, c.CellStruct)).ToList());
+        var mode = new PlayerMovementMode(engine, new Vector3(x, y, z), cellId, 1f);
+        mode.Update(Idle, Frame);
+        Vector3 settled = mode.Position;
+        uint cell = mode.CellId;
+        float.IsFinite(settled.Z).Should().BeTrue();
+
+        for (int i = 0; i < 10_000; i++)
+        {
+            mode.Update(Idle, Frame);
+            if (mode.Position != settled || mode.CellId != cell || !mode.IsOnGround)
+            {
+                throw new Xunit.Sdk.XunitException($"frame {i}: moved from {settled} (0x{cell:X8}) to {mode.Position} (0x{mode.CellId:X8}), on ground {mode.IsOnGround}");
+            }
+        }
+
+        if (cellId >= 0xA9B40100u)
+        {
+            settled.Z.Should().BeApproximately(z, 2e-3f, "indoors the mover stands on the floor");
+        }
+        else
+        {
+            settled.Z.Should().Be(world.Terrain(0xA8B4FFFFu).SampleZ(x + 192f, y), "outdoors on the hill");
+            settled.Z.Should().NotBe(94f, "the hill is not flat there");
+        }
+    }
+
+    [Theory]
+    [InlineData(-0.1f)]
+    [InlineData(float.NaN)]
+    [InlineData(float.PositiveInfinity)]
+    public void Update_BadFrameTime_Throws(float seconds)
+    {
+        var mode = new PlayerMovementMode(Flat(50), new Vector3(96f, 96f, 50f), 0xA9B40001u, 0f);
+
+        Action act = () => mode.Update(Idle, seconds);
+
+        act.Should().Throw<ArgumentOutOfRangeException>().WithMessage("*frame time*");
+    }
+}

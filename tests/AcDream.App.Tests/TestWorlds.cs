@@ -1,0 +1,130 @@
+using System.Numerics;
+using AcDream.App.Streaming;
+using AcDream.Core.Dat;
+using AcDream.Core.Physics;
+using Environment = AcDream.Core.Dat.Environment;
+
+namespace AcDream.App.Tests;
+
+/// <summary>Small builders for terrain, cells and landblock sources.</summary>
+internal static class TestWorlds
+{
+    public const uint Holtburg = 0xA9B4FFFFu;
+
+    /// <summary>Table entry i = i metres.</summary>
+    public static float[] LinearTable() => Enumerable.Range(0, 256).Select(i => (float)i).ToArray();
+
+    /// <summary>Height indices from a function of the vertex indices (x, y), x-major.</summary>
+    public static byte[] Heights(Func<int, int, int> height)
+    {
+        var heights = new byte[81];
+        for (int x = 0; x < 9; x++)
+        {
+            for (int y = 0; y < 9; y++)
+            {
+                heights[(x * 9) + y] = checked((byte)height(x, y));
+            }
+        }
+
+        return heights;
+    }
+
+    /// <summary>An engine centred on Holtburg with one landblock of terrain (linear table: index = metres) and the given cells.</summary>
+    public static PhysicsEngine Engine(byte[] heights, params CellSurface[] cells)
+    {
+        var engine = new PhysicsEngine(Holtburg);
+        engine.AddLandblock(Holtburg, new TerrainSurface(heights, LinearTable(), Holtburg), cells);
+        return engine;
+    }
+
+    /// <summary>A horizontal square, counter-clockwise seen from above (normal +Z), cell-local.</summary>
+    public static Vector3[] Square(float half, float z) =>
+        [new(-half, -half, z), new(half, -half, z), new(half, half, z), new(-half, half, z)];
+
+    /// <summary>
+    /// A cell at landblock-local <paramref name="origin"/> (no rotation) with optional floor and
+    /// horizontal portals (openings of the same square, to the cells named, at the heights given).
+    /// </summary>
+    public static CellSurface Cell(uint cellId, Vector3 origin, float? floorZ, params (ushort Other, float Z, bool CellAbove)[] openings)
+    {
+        var envCell = new EnvCell { Id = cellId, Position = new Frame { Origin = origin } };
+        var cellStruct = new CellStruct();
+        var ids = new Dictionary<Vector3, short>();
+        Polygon Polygon(Vector3[] vertices)
+        {
+            var polygon = new Polygon();
+            foreach (Vector3 v in vertices)
+            {
+                if (!ids.TryGetValue(v, out short id))
+                {
+                    id = (short)ids.Count;
+                    ids.Add(v, id);
+                    cellStruct.VertexArray.Vertices.Add((ushort)id, new SWVertex { Origin = v });
+                }
+
+                polygon.VertexIds.Add(id);
+            }
+
+            return polygon;
+        }
+
+        if (floorZ is float z)
+        {
+            cellStruct.PhysicsPolygons.Add(0, Polygon(Square(5f, z)));
+        }
+
+        ushort next = 100;
+        foreach ((ushort other, float openingZ, bool cellAbove) in openings)
+        {
+            cellStruct.Polygons.Add(next, Polygon(Square(2f, openingZ)));
+            cellStruct.Portals.Add(next);
+            // The square's normal is +Z: the cell is on its positive side when it lies above.
+            envCell.CellPortals.Add(new CellPortal { OtherCellId = other, PolygonId = next, Flags = PortalFlags.ExactMatch | (cellAbove ? PortalFlags.PortalSide : PortalFlags.None) });
+            next++;
+        }
+
+        return new CellSurface(cellId, envCell, cellStruct);
+    }
+}
+
+/// <summary>Flat land everywhere (index 10), no cells; can fail the first load of chosen landblocks and counts calls.</summary>
+internal sealed class FlatSource : ILandblockSource
+{
+    private readonly Func<uint, bool> _failFirst;
+    private readonly Random _random = new(7);
+    private readonly Dictionary<uint, int> _calls = [];
+    private readonly object _gate = new();
+
+    public FlatSource(Func<uint, bool>? failFirst = null) => _failFirst = failFirst ?? (_ => false);
+
+    public bool Jitter { get; init; }
+
+    public int Calls(uint landblockId)
+    {
+        lock (_gate)
+        {
+            return _calls.GetValueOrDefault(landblockId);
+        }
+    }
+
+    public LoadedLandblock Load(uint landblockId)
+    {
+        int call;
+        lock (_gate)
+        {
+            call = _calls[landblockId] = _calls.GetValueOrDefault(landblockId) + 1;
+        }
+
+        if (Jitter)
+        {
+            Thread.SpinWait(_random.Next(0, 2000)); // vary how the loader interleaves with the frame loop
+        }
+
+        if (call == 1 && _failFirst(landblockId))
+        {
+            throw new IOException($"simulated read error for 0x{landblockId:X8}");
+        }
+
+        return new LoadedLandblock(new LandBlock { Id = landblockId, Height = Enumerable.Repeat((byte)10, 81).ToArray() }, [], new Dictionary<uint, Environment>());
+    }
+}
