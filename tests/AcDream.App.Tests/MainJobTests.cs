@@ -1,5 +1,6 @@
 using System.Xml.Linq;
 using AcDream.App.Scenes;
+using AcDream.Core.Physics;
 using AcDream.App.World;
 
 namespace AcDream.App.Tests;
@@ -29,10 +30,50 @@ public sealed class MainJobTests : IDisposable
         record.Final.Position.Z.Should().BeApproximately(90f, 1e-3f, "the cellar floor");
         record.RefusalCount(RefusalReason.StepTooHigh).Should().BeGreaterThan(0, "the needle and the 1 m step refuse moves");
         record.RefusalCount(RefusalReason.Wall).Should().BeGreaterThan(0, "the main room's east wall refuses moves");
-        record.Drops.Should().ContainSingle(d => d.ToCellId == 0xA9B40174u && d.FromZ - d.ToZ > 3.9f);
+        record.Scene.Effects.Should().Be(MovementOptions.Player, "the default scene uses the effects a player uses");
+        record.Drops.Should().BeEmpty("with step down on, the shaft is a fall, not a one-frame drop");
+        Fall fall = record.Falls().Should().ContainSingle().Subject;
+        fall.FromZ.Should().BeApproximately(94f, 1e-3f);
+        fall.LandingCellId.Should().Be(0xA9B40174u);
+        fall.LandingZ.Should().BeApproximately(90.001f, 1e-3f, "the cellar floor's Z");
+        fall.AirborneFrames.Should().BeInRange(24, 30, "4 m under 9.8 m/s² take 0.9 s, 27 frames at 30 Hz");
+        record.AirborneFrames.Should().Be(fall.AirborneFrames);
         record.Streaming.Count(e => e.Loaded).Should().Be(12, "9 at the start and 3 after the seam");
         record.Streaming.Count(e => !e.Loaded).Should().Be(3);
         record.Legs.Should().HaveCount(19);
+    }
+
+    [Fact]
+    public void SceneRunner_LiteralEffects_ShaftIsAOneFrameDrop()
+    {
+        Scene scene = SceneReader.ReadDefault() with { Effects = MovementOptions.Literal };
+        WalkRecord record = SceneRunner.Run(scene, new HoltburgWorld());
+
+        record.Drops.Should().ContainSingle(d => d.ToCellId == 0xA9B40174u && d.FromZ - d.ToZ > 3.9f);
+        record.AirborneFrames.Should().Be(0, "the literal engine always snaps to the ground");
+        record.Final.CellId.Should().Be(0xA9B40174u);
+    }
+
+    [Theory]
+    [InlineData("\"player\"", 1.5f, true, 0.48f, true)]
+    [InlineData("\"literal\"", null, false, null, false)]
+    [InlineData("{ \"stepDownHeight\": 2, \"doorsOnly\": true }", 2f, false, null, true)]
+    [InlineData("{ \"walkableSlope\": true, \"sweepStepLength\": 0.3 }", null, true, 0.3f, false)]
+    public void SceneReader_Effects_ReadAsMovementOptions(string effects, float? stepDown, bool slope, float? sweep, bool doors)
+    {
+        Scene scene = SceneReader.Parse($$"""{ "name": "t", "start": { "position": [10, 10] }, "effects": {{effects}}, "legs": [ { "name": "a", "to": [11, 10] } ] }""", "test.json");
+        scene.Effects.Should().Be(new MovementOptions { StepDownHeight = stepDown, WalkableSlope = slope, SweepStepLength = sweep, DoorsOnly = doors });
+    }
+
+    [Theory]
+    [InlineData("\"fast\"", "effects")]
+    [InlineData("{ \"stepDownHeight\": -1 }", "effects.stepDownHeight")]
+    [InlineData("{ \"sweepStepLength\": 0 }", "effects.sweepStepLength")]
+    [InlineData("{ \"gravity\": 3 }", "effects")]
+    public void SceneReader_BadEffects_NameTheField(string effects, string field)
+    {
+        FluentActions.Invoking(() => SceneReader.Parse($$"""{ "name": "t", "start": { "position": [10, 10] }, "effects": {{effects}}, "legs": [ { "name": "a", "to": [11, 10] } ] }""", "bad.json"))
+            .Should().Throw<SceneFormatException>().WithMessage($"*bad.json*{field}*");
     }
 
     [Fact]

@@ -225,4 +225,74 @@ public class PlayerMovementModeTests
 
         act.Should().Throw<ArgumentOutOfRangeException>().WithMessage("*frame time*");
     }
+
+    [Fact]
+    public void Update_StepDownOffACliff_FallsUnderGravityAndLandsOnTheGround()
+    {
+        // A cliff: 300 m for x ≤ 96 (vertex columns 0..4), 0 m from x = 120; walking east off its edge
+        // drops 1.7 m per 0.13 m frame move, more than the player's 1.5 m step down.
+        float[] table = new float[256];
+        table[1] = 300f;
+        var engine = new PhysicsEngine(Holtburg);
+        engine.AddLandblock(Holtburg, new TerrainSurface(Heights((x, _) => x <= 4 ? 1 : 0), table, Holtburg), []);
+        var mode = new PlayerMovementMode(engine, new Vector3(95f, 50f, 300f), 0xA9B40000u, MathF.PI / 2f, MovementOptions.Player);
+
+        int frame = 0, airborne = 0;
+        float lowestAirborneZ = float.MaxValue;
+        while (frame < 600 && (airborne == 0 || !mode.IsOnGround))
+        {
+            mode.Update(new MovementIntent(1f, 0f, 0f, true), Frame);
+            frame++;
+            if (!mode.IsOnGround)
+            {
+                airborne++;
+                lowestAirborneZ = MathF.Min(lowestAirborneZ, mode.Position.Z);
+                if (airborne > 1)
+                {
+                    mode.VerticalSpeed.Should().BeLessThan(0f, $"frame {frame}: falling (the frame it leaves the ground it has no vertical speed yet)");
+                }
+
+                float ground = engine.Resolve(mode.Position, mode.CellId, Vector3.Zero, 0f).Position.Z;
+                mode.Position.Z.Should().BeGreaterThan(ground, $"frame {frame}: an airborne mover is above the ground ({ground} m)");
+            }
+        }
+
+        airborne.Should().BeGreaterThan(10, "stepping off the cliff leaves the ground");
+        mode.IsOnGround.Should().BeTrue($"landed after {frame} frames");
+        float landed = engine.Resolve(mode.Position, mode.CellId, Vector3.Zero, 0f).Position.Z;
+        mode.Position.Z.Should().BeApproximately(landed, 1e-4f, "on the ground under it");
+        mode.VerticalSpeed.Should().Be(0f);
+
+        // The literal engine walks the same edge with no airborne frame at all.
+        var literal = new PlayerMovementMode(engine, new Vector3(95f, 50f, 300f), 0xA9B40000u, MathF.PI / 2f);
+        for (int i = 0; i < frame; i++)
+        {
+            literal.Update(new MovementIntent(1f, 0f, 0f, true), Frame);
+            literal.IsOnGround.Should().BeTrue($"literal frame {i}");
+        }
+    }
+
+    [Fact]
+    public void Update_StepDownIndoorShaft_FallsToTheCellarFloorAndLands()
+    {
+        var world = new HoltburgWorld();
+        var engine = new PhysicsEngine(HoltburgWorld.Holtburg);
+        engine.AddLandblock(HoltburgWorld.Holtburg, new TerrainSurface(Heights((_, _) => 94), LinearTable(), HoltburgWorld.Holtburg),
+            world.Cells.Select(c => new CellSurface(c.CellId, c.EnvCell, c.CellStruct)).ToList());
+
+        // Building B's main room 0x0171, walking west over its cellar shaft (x 152.93–154.93).
+        var mode = new PlayerMovementMode(engine, new Vector3(155.3f, 8.4f, 94f), 0xA9B40171u, -MathF.PI / 2f, MovementOptions.Player);
+        int frame = 0, airborne = 0;
+        while (frame < 300 && (airborne == 0 || !mode.IsOnGround))
+        {
+            mode.Update(new MovementIntent(airborne == 0 ? 1f : 0f, 0f, 0f, false), Frame);
+            frame++;
+            airborne += mode.IsOnGround ? 0 : 1;
+        }
+
+        airborne.Should().BeInRange(24, 30, "4 m under gravity take about 0.9 s");
+        mode.IsOnGround.Should().BeTrue();
+        mode.CellId.Should().Be(0xA9B40174u);
+        mode.Position.Z.Should().BeApproximately(90.001f, 1e-3f, "the cellar floor's Z");
+    }
 }

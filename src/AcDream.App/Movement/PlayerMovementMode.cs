@@ -5,7 +5,7 @@ namespace AcDream.App.Movement;
 
 /// <summary>
 /// The Phase B.2 seam: each frame turns the player's intent into a horizontal move, resolves it with
-/// <see cref="PhysicsEngine.Resolve(Vector3, uint, Vector3, float)"/> and keeps the resulting position and cell. While the engine
+/// <see cref="PhysicsEngine.Resolve(Vector3, uint, Vector3, float, in MovementOptions)"/> and keeps the resulting position and cell. While the engine
 /// reports no ground, a vertical speed accumulates under gravity and lowers the mover; it lands when
 /// the engine finds ground at the falling mover's height.
 /// </summary>
@@ -13,8 +13,11 @@ namespace AcDream.App.Movement;
 /// Positions are world metres in the engine's frame. Heading is a compass angle in radians: 0 faces
 /// north (+Y), π/2 east (+X). A frame longer than <see cref="MaxStepSeconds"/> is split into equal
 /// steps no longer than that, so a slow frame does not make one long move through walls or up slopes.
-/// The engine moves Z only to the ground it finds; a drop onto lower ground (the cellar under a shaft)
-/// is therefore a snap, not a fall.
+/// With the literal engine (no <see cref="Effects"/>) Z moves only to the ground found, so a drop
+/// onto lower ground (the cellar under a shaft) is a snap. With
+/// <see cref="MovementOptions.StepDownHeight"/> set, ground farther below leaves the mover airborne:
+/// gravity brings it down, and it lands when its Z reaches the ground (while airborne the mode asks
+/// the engine with a step down of 0, so the landing is exact).
 /// </remarks>
 public sealed class PlayerMovementMode
 {
@@ -41,13 +44,17 @@ public sealed class PlayerMovementMode
 
     private readonly PhysicsEngine _engine;
 
+    /// <summary><see cref="Effects"/> while airborne: step down 0, so the mover lands only when its Z reaches the ground.</summary>
+    private readonly MovementOptions _fallingEffects;
+
     /// <summary>Places the mover; it starts on the ground, not moving vertically.</summary>
     /// <param name="engine">The engine to resolve against.</param>
     /// <param name="position">Feet position, world metres.</param>
     /// <param name="cellId">The cell at <paramref name="position"/> (<c>0xXXYYCCCC</c>); for outdoors any outdoor number works, the engine recomputes it.</param>
     /// <param name="heading">Compass heading, radians (0 north, π/2 east).</param>
+    /// <param name="effects">The engine's opt-in effects this mover uses (default: none, the spec's literal engine).</param>
     /// <exception cref="ArgumentException">The position or heading is not finite.</exception>
-    public PlayerMovementMode(PhysicsEngine engine, Vector3 position, uint cellId, float heading)
+    public PlayerMovementMode(PhysicsEngine engine, Vector3 position, uint cellId, float heading, MovementOptions effects = default)
     {
         ArgumentNullException.ThrowIfNull(engine);
         if (!float.IsFinite(position.X) || !float.IsFinite(position.Y) || !float.IsFinite(position.Z) || !float.IsFinite(heading))
@@ -56,11 +63,16 @@ public sealed class PlayerMovementMode
         }
 
         _engine = engine;
+        Effects = effects;
+        _fallingEffects = effects.StepDownHeight is null ? effects : effects with { StepDownHeight = 0f };
         Position = position;
         CellId = cellId;
         Heading = heading;
         IsOnGround = true;
     }
+
+    /// <summary>The engine's opt-in effects this mover uses; see <see cref="MovementOptions"/>.</summary>
+    public MovementOptions Effects { get; }
 
     /// <summary>Feet position, world metres.</summary>
     public Vector3 Position { get; private set; }
@@ -145,7 +157,7 @@ public sealed class PlayerMovementMode
             position.Z += VerticalSpeed * dt;
         }
 
-        ResolveResult result = _engine.Resolve(position, CellId, delta, StepUpHeight);
+        ResolveResult result = _engine.Resolve(position, CellId, delta, StepUpHeight, IsOnGround ? Effects : _fallingEffects);
         Position = result.Position;
         CellId = result.CellId;
         IsOnGround = result.IsOnGround;

@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcDream.Core.Physics;
 
 namespace AcDream.App.Scenes;
 
@@ -9,4 +10,5 @@ namespace AcDream.App.Scenes;
 /// <param name="StartHeadingDegrees">Compass heading at the start, degrees (0 north, 90 east).</param>
 /// <param name="Legs">The legs, run in order.</param>
 /// <param name="Notes">Lines printed under the summary.</param>
-internal sealed record Scene(string Name, string Source, Vector2 Start, float StartHeadingDegrees, IReadOnlyList<SceneLeg> Legs, IReadOnlyList<string> Notes);
+/// <param name="Effects">The engine's opt-in effects the walk uses (<c>"effects"</c>; default none).</param>
+internal sealed record Scene(string Name, string Source, Vector2 Start, float StartHeadingDegrees, IReadOnlyList<SceneLeg> Legs, IReadOnlyList<string> Notes, MovementOptions Effects);

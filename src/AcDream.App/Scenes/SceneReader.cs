@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using System.Reflection;
 using System.Text.Json;
+using AcDream.Core.Physics;
 
 namespace AcDream.App.Scenes;
 
@@ -20,7 +21,8 @@ internal static class SceneReader
     /// <summary>How far from 0xA9B4's corner a start may be, metres: the 3 × 3 landblocks around Holtburg and one more ring (the world is bigger, the walk is not).</summary>
     public const float MaxStartDistance = 2 * 192f;
 
-    private static readonly string[] SceneFields = ["name", "start", "legs", "notes"];
+    private static readonly string[] SceneFields = ["name", "start", "legs", "notes", "effects"];
+    private static readonly string[] EffectFields = ["stepDownHeight", "walkableSlope", "sweepStepLength", "doorsOnly"];
     private static readonly string[] StartFields = ["position", "heading"];
     private static readonly string[] LegFields = ["name", "to", "forward", "strafe", "turn", "run", "backward", "seconds"];
 
@@ -109,8 +111,32 @@ internal static class SceneReader
                 }
             }
 
-            return new Scene(name, source, position, heading, legs, notes);
+            MovementOptions effects = root.TryGetProperty("effects", out JsonElement effectsElement) ? ReadEffects(context, effectsElement) : default;
+            return new Scene(name, source, position, heading, legs, notes, effects);
         }
+    }
+
+    /// <summary><c>"effects"</c>: <c>"literal"</c>, <c>"player"</c>, or an object naming each effect.</summary>
+    private static MovementOptions ReadEffects(Context context, JsonElement element)
+    {
+        if (element.ValueKind == JsonValueKind.String)
+        {
+            return element.GetString() switch
+            {
+                "literal" => MovementOptions.Literal,
+                "player" => MovementOptions.Player,
+                _ => throw context.Error("effects", element, "must be \"literal\", \"player\" or an object of effects"),
+            };
+        }
+
+        context.RequireObject(element, "effects", EffectFields);
+        return new MovementOptions
+        {
+            StepDownHeight = element.TryGetProperty("stepDownHeight", out _) ? context.OptionalNumber(element, "stepDownHeight", "effects.stepDownHeight", 0f, 0f, 1000f) : null,
+            WalkableSlope = context.OptionalBool(element, "walkableSlope", "effects.walkableSlope"),
+            SweepStepLength = element.TryGetProperty("sweepStepLength", out _) ? context.OptionalNumber(element, "sweepStepLength", "effects.sweepStepLength", 1f, 0.01f, 100f) : null,
+            DoorsOnly = context.OptionalBool(element, "doorsOnly", "effects.doorsOnly"),
+        };
     }
 
     private static SceneLeg ReadLeg(Context context, JsonElement leg, string path)

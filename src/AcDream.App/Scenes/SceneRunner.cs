@@ -42,7 +42,7 @@ internal static class SceneRunner
         Wait(window);
         window.UpdateStreaming(start);
 
-        var mode = new PlayerMovementMode(engine, start, startCell, scene.StartHeadingDegrees * (MathF.PI / 180f));
+        var mode = new PlayerMovementMode(engine, start, startCell, scene.StartHeadingDegrees * (MathF.PI / 180f), scene.Effects);
         samples.Add(new FrameSample(0, start, startCell, true, null));
         List<CellSurface> indoor = world.Cells.Select(c => new CellSurface(c.CellId, c.EnvCell, c.CellStruct)).ToList();
         Vector3 indoorOrigin = engine.GetLandblockOrigin(HoltburgWorld.Holtburg);

@@ -37,6 +37,18 @@ internal readonly record struct StreamingEvent(int Frame, uint LandblockId, bool
 /// <summary>A frame where the mover went down more than the step height while staying on the ground.</summary>
 internal readonly record struct Drop(int Frame, float FromZ, uint FromCellId, float ToZ, uint ToCellId);
 
+/// <summary>An airborne span: the mover left the ground after <paramref name="TakeOffFrame"/> and landed at <paramref name="LandingFrame"/>.</summary>
+/// <param name="TakeOffFrame">Last frame on the ground.</param>
+/// <param name="LandingFrame">First frame on the ground again (−1: still airborne at the end).</param>
+/// <param name="FromZ">Feet Z at take-off, metres.</param>
+/// <param name="LandingZ">Feet Z at landing, metres.</param>
+/// <param name="LandingCellId">The cell landed in.</param>
+internal readonly record struct Fall(int TakeOffFrame, int LandingFrame, float FromZ, float LandingZ, uint LandingCellId)
+{
+    /// <summary>Frames spent in the air.</summary>
+    public int AirborneFrames => LandingFrame - TakeOffFrame - 1;
+}
+
 /// <summary>Everything a scene run produced.</summary>
 internal sealed record WalkRecord(
     Scene Scene,
@@ -52,6 +64,33 @@ internal sealed record WalkRecord(
 
     /// <summary>Frames that ended off the ground.</summary>
     public int AirborneFrames => Samples.Count(s => !s.IsOnGround);
+
+    /// <summary>The airborne spans, in order.</summary>
+    public IReadOnlyList<Fall> Falls()
+    {
+        var falls = new List<Fall>();
+        for (int i = 1; i < Samples.Count; i++)
+        {
+            if (Samples[i].IsOnGround || !Samples[i - 1].IsOnGround)
+            {
+                continue;
+            }
+
+            int land = i;
+            while (land < Samples.Count && !Samples[land].IsOnGround)
+            {
+                land++;
+            }
+
+            FrameSample takeOff = Samples[i - 1];
+            falls.Add(land < Samples.Count
+                ? new Fall(takeOff.Frame, Samples[land].Frame, takeOff.Position.Z, Samples[land].Position.Z, Samples[land].CellId)
+                : new Fall(takeOff.Frame, -1, takeOff.Position.Z, Samples[^1].Position.Z, Samples[^1].CellId));
+            i = land;
+        }
+
+        return falls;
+    }
 
     /// <summary>Refused moves over the whole walk.</summary>
     public int RefusalCount(RefusalReason reason) => Samples.Count(s => s.Refusal == reason);

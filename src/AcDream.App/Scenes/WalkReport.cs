@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Text;
+using AcDream.Core.Physics;
 using AcDream.App.Movement;
 using AcDream.App.World;
 
@@ -16,6 +17,7 @@ internal static class WalkReport
 
         int frames = record.Final.Frame;
         Line($"Scene \"{record.Scene.Name}\" ({record.Scene.Source}): {frames} frames at {SceneRunner.FramesPerSecond} Hz, {frames / (float)SceneRunner.FramesPerSecond:F1} s simulated{(record.Truncated ? ", stopped early by --frames" : "")}.");
+        Line($"Effects: {DescribeEffects(record.Scene.Effects)}.");
         text.AppendLine();
 
         Line($"Cells visited (frame entered):");
@@ -55,9 +57,20 @@ internal static class WalkReport
         text.AppendLine();
         Line($"Refused moves: {record.RefusalCount(RefusalReason.StepTooHigh)} step too high, {record.RefusalCount(RefusalReason.Wall)} wall, {record.RefusalCount(RefusalReason.UnloadedLand)} unloaded land.");
         Line($"Airborne: {record.AirborneFrames} frames.");
+        foreach (Fall fall in record.Falls())
+        {
+            if (fall.LandingFrame < 0)
+            {
+                Line($"Fall from frame {fall.TakeOffFrame} at {fall.FromZ:F2} m: still airborne at the end ({fall.LandingZ:F2} m).");
+                continue;
+            }
+
+            Line($"Fall from frame {fall.TakeOffFrame} at {fall.FromZ:F2} m: {fall.AirborneFrames} frames airborne under gravity, landed at frame {fall.LandingFrame} on {fall.LandingZ:F3} m in 0x{fall.LandingCellId:X8}.");
+        }
+
         foreach (Drop drop in record.Drops)
         {
-            Line($"Drop at frame {drop.Frame}: {drop.FromZ:F2} m (0x{drop.FromCellId:X8}) to {drop.ToZ:F2} m (0x{drop.ToCellId:X8}) in one frame; the engine puts the mover on the floor below at once, so there is no fall (a later issue adds one).");
+            Line($"Drop at frame {drop.Frame}: {drop.FromZ:F2} m (0x{drop.FromCellId:X8}) to {drop.ToZ:F2} m (0x{drop.ToCellId:X8}) in one frame: without the step-down effect the engine puts the mover on the floor below at once (set \"effects\" in the scene for a fall).");
         }
 
         int loaded = record.Streaming.Count(e => e.Loaded), unloaded = record.Streaming.Count(e => !e.Loaded);
@@ -87,6 +100,32 @@ internal static class WalkReport
     }
 
     /// <summary>Short text for a refusal reason.</summary>
+    private static string DescribeEffects(MovementOptions effects)
+    {
+        var on = new List<string>();
+        if (effects.StepDownHeight is float down)
+        {
+            on.Add(FormattableString.Invariant($"step down {down} m (falls under gravity)"));
+        }
+
+        if (effects.WalkableSlope)
+        {
+            on.Add("walkable slope");
+        }
+
+        if (effects.SweepStepLength is float sweep)
+        {
+            on.Add(FormattableString.Invariant($"swept in {sweep} m sub-steps"));
+        }
+
+        if (effects.DoorsOnly)
+        {
+            on.Add("doors only");
+        }
+
+        return on.Count == 0 ? "none (the spec's literal engine)" : string.Join(", ", on);
+    }
+
     public static string Describe(RefusalReason reason) => reason switch
     {
         RefusalReason.StepTooHigh => $"step too high (> {PlayerMovementMode.StepUpHeight} m)",
