@@ -11,7 +11,11 @@ namespace AcDream.Core.Physics;
 /// At construction the cell's physics polygons are moved from cell-local to landblock-local space
 /// (<c>Origin + Vector3.Transform(v, Orientation)</c>, the orientation normalised), the floors are
 /// kept (winding normal Z ≥ <see cref="PhysicsConstants.FloorZ"/>; walls and ceilings never are) and
-/// fan-triangulated, and the portals are prepared for crossing tests. Queries are arithmetic only and
+/// fan-triangulated (triangles with no area, facing down, or thinner than
+/// <see cref="PhysicsConstants.EdgeTolerance"/> dropped), and the portals are prepared for crossing
+/// tests. A floor's Z is its polygon's plane (the plane through the vertices' mean with the winding
+/// normal) when every vertex lies within <see cref="PhysicsConstants.EdgeTolerance"/> of it, else each
+/// triangle's own plane; always clamped to the triangle's Z range. Queries are arithmetic only and
 /// allocate nothing. Instances are immutable and safe to share between threads.
 /// </remarks>
 public sealed class CellSurface
@@ -42,9 +46,11 @@ public sealed class CellSurface
     /// <exception cref="ArgumentNullException">An argument, or a list inside them, is null.</exception>
     /// <exception cref="ArgumentException">
     /// The id is not an indoor cell id or disagrees with <c>envCell.Id</c>; the position is not finite
-    /// or its orientation is zero; a polygon has fewer than three vertices, names an unknown vertex, or
-    /// has a non-finite vertex; a portal names a polygon that <c>Polygons</c> lacks. The message names
-    /// the cell, the polygon or portal, and what is wrong.
+    /// or its orientation is zero (length below 1e-6; any longer quaternion is normalised, in double);
+    /// a polygon has fewer than three vertices, names an unknown vertex, or has a non-finite vertex, or
+    /// one that, placed, lies farther than <see cref="PhysicsConstants.MaxCellCoordinate"/> from the
+    /// landblock's origin on any axis; a portal names a polygon that <c>Polygons</c> lacks. The message
+    /// names the cell, the polygon or portal, and what is wrong.
     /// </exception>
     public CellSurface(uint cellId, EnvCell envCell, CellStruct cellStruct)
     {
@@ -69,15 +75,20 @@ public sealed class CellSurface
             throw new ArgumentException($"{cell}: Position.Origin {origin} is not finite.", nameof(envCell));
         }
 
+        // Normalised in double: a float LengthSquared overflows for a quaternion longer than ~1.8e19
+        // (and Quaternion.Normalize then returns zero, which rotates nothing).
+        double length = Math.Sqrt(((double)orientation.X * orientation.X) + ((double)orientation.Y * orientation.Y)
+            + ((double)orientation.Z * orientation.Z) + ((double)orientation.W * orientation.W));
         if (!float.IsFinite(orientation.X) || !float.IsFinite(orientation.Y) || !float.IsFinite(orientation.Z) || !float.IsFinite(orientation.W)
-            || orientation.LengthSquared() < 1e-12f)
+            || !(length >= 1e-6))
         {
-            throw new ArgumentException($"{cell}: Position.Orientation {orientation} is not a rotation (non-finite or zero).", nameof(envCell));
+            throw new ArgumentException($"{cell}: Position.Orientation {orientation} is not a rotation (non-finite, or shorter than 1e-6).", nameof(envCell));
         }
 
         CellId = cellId;
         Origin = origin;
-        var transform = new CellTransform(cell, cellStruct, origin, Quaternion.Normalize(orientation));
+        var unit = new Quaternion((float)(orientation.X / length), (float)(orientation.Y / length), (float)(orientation.Z / length), (float)(orientation.W / length));
+        var transform = new CellTransform(cell, cellStruct, origin, unit);
 
         _floors = BuildFloors(cell, cellStruct, transform);
         (Portals, _portalShapes) = BuildPortals(cell, cellId, envCell, cellStruct, transform);
@@ -135,7 +146,9 @@ public sealed class CellSurface
     /// <remarks>
     /// Coordinates and the result are landblock-local metres. Where floors are stacked, the topmost
     /// one under the point wins, whatever the polygon order. A point on an edge or vertex, or within
-    /// <see cref="PhysicsConstants.EdgeTolerance"/> of one, is on the floor.
+    /// <see cref="PhysicsConstants.EdgeTolerance"/> of one, is on the floor. The Z is the plane's (see
+    /// the class remarks), not a blend of one triangle's vertices, so it is the same on both sides of a
+    /// polygon's inner edges and no thin triangle can skew it.
     /// </remarks>
     /// <exception cref="ArgumentException">A coordinate is NaN or infinite.</exception>
     public float? SampleFloorZ(float worldX, float worldY)
@@ -212,9 +225,10 @@ public sealed class CellSurface
                 continue; // a wall, a ceiling, too steep, or no area
             }
 
+            FloorPlane? plane = FloorPlane.OfPolygon(v, normal);
             for (int i = 1; i + 1 < v.Length; i++)
             {
-                if (FloorTriangle.TryCreate(v[0], v[i], v[i + 1], out FloorTriangle triangle))
+                if (FloorTriangle.TryCreate(v[0], v[i], v[i + 1], plane, out FloorTriangle triangle))
                 {
                     triangles.Add(triangle);
                 }
@@ -310,6 +324,14 @@ public sealed class CellSurface
             }
 
             moved = origin + Vector3.Transform(local, orientation);
+            if (!(MathF.Abs(moved.X) <= PhysicsConstants.MaxCellCoordinate && MathF.Abs(moved.Y) <= PhysicsConstants.MaxCellCoordinate
+                && MathF.Abs(moved.Z) <= PhysicsConstants.MaxCellCoordinate))
+            {
+                throw new ArgumentException(
+                    $"{cell}: vertex {id} ({what}) is placed at {moved}, farther than {PhysicsConstants.MaxCellCoordinate} m from the landblock.",
+                    nameof(cellStruct));
+            }
+
             _moved[id] = moved;
             return moved;
         }

@@ -44,6 +44,14 @@ public static class PhysicsConstants
     public const float HorizontalPortalNormalZ = 0.5f;
 
     /// <summary>
+    /// Largest |coordinate| (metres, landblock-local, on each axis) a cell's vertex may have once
+    /// placed: 100 km, twice the width of the world. It keeps every product the floor and portal
+    /// tests form finite; no real cell comes near it.
+    /// </summary>
+    /// <value>100,000 m.</value>
+    public const float MaxCellCoordinate = 100_000f;
+
+    /// <summary>
     /// Most cells one move may pass through after leaving the current one (doorway → vestibule →
     /// room, or opening → shaft → cellar). Bounds the search on cyclic portal graphs.
     /// </summary>

@@ -169,7 +169,7 @@ public sealed class PhysicsEngine
     /// <param name="currentCellId">The cell the mover is in (<c>0xXXYYCCCC</c>); for an outdoor mover any outdoor number, 0 included, is accepted and recomputed from the position.</param>
     /// <param name="delta">The intended move, world metres.</param>
     /// <param name="stepUpHeight">Highest rise one move may climb, metres, ≥ 0.</param>
-    /// <exception cref="ArgumentException">An argument is NaN or infinite, the step height is negative, the cell number is not a cell (0x0041..0x00FF, 0xFFFE, 0xFFFF), or an indoor cell is not in its registered landblock.</exception>
+    /// <exception cref="ArgumentException">An argument is NaN or infinite, the step height is negative, the cell number is not a cell (0x0041..0x00FF, 0xFFFE, 0xFFFF), the id's landblock X or Y is off the world (0xFF), or an indoor cell is not in its registered landblock.</exception>
     public ResolveResult Resolve(
         Vector3 currentPos,
         uint currentCellId,
@@ -524,6 +524,12 @@ public sealed class PhysicsEngine
         {
             throw new ArgumentException($"currentCellId 0x{cellId:X8} is not a cell: outdoor cells are 0x0001..0x0040, indoor 0x0100..0xFFFD.", "currentCellId");
         }
+
+        if (!CellIds.IsInWorld(CellIds.LandblockX(cellId), CellIds.LandblockY(cellId)))
+        {
+            throw new ArgumentException(
+                $"currentCellId 0x{cellId:X8} names a landblock off the world: X and Y must be within 0x00..0x{PhysicsConstants.MaxLandblockIndex:X2}.", "currentCellId");
+        }
     }
 
     private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
@@ -585,7 +591,33 @@ public sealed class PhysicsEngine
     private Vector3 ToWorld(int lbX, int lbY, Vector2 local, float z) =>
         new(Offset(lbX, _originX) + local.X, Offset(lbY, _originY) + local.Y, z);
 
-    private static uint OutdoorCellId(int lbX, int lbY, Vector2 local) => CellIds.Prefix(lbX, lbY) | OutdoorCellNumber(local);
+    /// <summary>
+    /// The full id of the outdoor cell at <paramref name="local"/> of landblock (lbX, lbY). A mover held
+    /// off the world (a position beyond its edge) gets the nearest edge cell of the world, never a
+    /// wrapped-around prefix of another landblock.
+    /// </summary>
+    private static uint OutdoorCellId(int lbX, int lbY, Vector2 local)
+    {
+        if (!CellIds.IsInWorld(lbX, lbY))
+        {
+            ClampToWorld(ref lbX, ref local.X);
+            ClampToWorld(ref lbY, ref local.Y);
+        }
+
+        return CellIds.Prefix(lbX, lbY) | OutdoorCellNumber(local);
+
+        static void ClampToWorld(ref int landblock, ref float coordinate)
+        {
+            if (landblock < 0)
+            {
+                (landblock, coordinate) = (0, 0f);
+            }
+            else if (landblock > PhysicsConstants.MaxLandblockIndex)
+            {
+                (landblock, coordinate) = (PhysicsConstants.MaxLandblockIndex, PhysicsConstants.LandblockSize);
+            }
+        }
+    }
 
     private static uint OutdoorCellNumber(Vector2 local)
     {
