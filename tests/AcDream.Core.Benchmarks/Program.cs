@@ -1,0 +1,46 @@
+using AcDream.Core.Benchmarks;
+using BenchmarkDotNet.Columns;
+using BenchmarkDotNet.Configs;
+using BenchmarkDotNet.Jobs;
+using BenchmarkDotNet.Running;
+using BenchmarkDotNet.Toolchains.InProcess.Emit;
+using Perfolizer.Horology;
+
+// `--accuracy`: the accuracy report (section 3 of docs/accuracy-vs-time.md); anything else goes to
+// BenchmarkDotNet (`--filter '*SampleZ*'`, `--list flat`, ...). See README.md in this folder.
+if (args.Contains("--accuracy"))
+{
+    AccuracyReport.Run(Console.Out);
+    return 0;
+}
+
+// BenchmarkDotNet 0.14.0 (the newest on this machine's NuGet mirror) predates .NET 10, yet its
+// default toolchain works here: it builds a child project for the host's runtime (about 15 s per
+// run). `--in-process` runs the benchmarks in this (Release) process instead, with no child build.
+bool inProcess = args.Contains("--in-process");
+args = args.Where(a => a != "--in-process").ToArray();
+
+// A short job: one launch, 12 warm-up and 15 measured iterations of up to 150 ms each, so every
+// group runs in about a minute and all of them in a few minutes on two cores. The pilot runs on
+// tier-0 code, so the warm-ups must outlast tiered compilation (tier-0 → instrumented → tier-1 with
+// PGO): with 3 of them, identical benchmarks differed by 2×. Tier-up starts at once
+// (TC_CallCountingDelayMs=0) rather than after 100 ms; the final code is the same.
+Job job = Job.Default
+    .WithLaunchCount(1)
+    .WithWarmupCount(12)
+    .WithIterationCount(15)
+    .WithIterationTime(TimeInterval.FromMilliseconds(150))
+    .WithEnvironmentVariable(new EnvironmentVariable("DOTNET_TC_CallCountingDelayMs", "0"))
+    .WithId("Quick");
+if (inProcess)
+{
+    job = job.WithToolchain(InProcessEmitToolchain.Instance);
+}
+
+IConfig config = DefaultConfig.Instance
+    .AddJob(job)
+    .AddColumn(StatisticColumn.Median)
+    .WithOptions(ConfigOptions.DisableLogFile);
+
+BenchmarkSwitcher.FromAssembly(typeof(World).Assembly).Run(args, config);
+return 0;

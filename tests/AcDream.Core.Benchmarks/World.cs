@@ -1,0 +1,240 @@
+using System.Numerics;
+using AcDream.App.Fixtures;
+using AcDream.Core.Dat;
+using AcDream.Core.Physics;
+
+namespace AcDream.Core.Benchmarks;
+
+/// <summary>Seeded builders for the benchmark and accuracy worlds. Landblock-local metres throughout.</summary>
+internal static class World
+{
+    /// <summary>Holtburg, the centre landblock of every benchmark world.</summary>
+    public const uint Holtburg = 0xA9B4FFFFu;
+
+    /// <summary>Floor height of the Holtburg cottages (metres); the indoor world's flat terrain sits there.</summary>
+    public const float HoltburgGroundZ = 94f;
+
+    public const float PlayerStepUp = 0.5f;
+
+    /// <summary>A non-linear table like the game's: fine steps low, coarse steps high (metres).</summary>
+    public static float[] NonLinearTable()
+    {
+        var table = new float[256];
+        for (int i = 0; i < 256; i++)
+        {
+            table[i] = (0.5f * i) + (0.02f * i * i);
+        }
+
+        return table;
+    }
+
+    /// <summary>Every index gives <paramref name="z"/> metres.</summary>
+    public static float[] ConstantTable(float z)
+    {
+        var table = new float[256];
+        Array.Fill(table, z);
+        return table;
+    }
+
+    /// <summary>Rolling land: each vertex is <paramref name="baseIndex"/> ± <paramref name="spread"/> table indices.</summary>
+    public static byte[] RollingHeights(Random random, int baseIndex, int spread)
+    {
+        var heights = new byte[81];
+        for (int i = 0; i < heights.Length; i++)
+        {
+            heights[i] = (byte)Math.Clamp(baseIndex + random.Next(-spread, spread + 1), 0, 255);
+        }
+
+        return heights;
+    }
+
+    public static uint LandblockId(int x, int y) => ((uint)x << 24) | ((uint)y << 16) | 0xFFFFu;
+
+    /// <summary>The 1 or 9 landblock ids centred on Holtburg (the centre first).</summary>
+    public static List<uint> Landblocks(int count)
+    {
+        int cx = (int)(Holtburg >> 24), cy = (int)((Holtburg >> 16) & 0xFF);
+        var ids = new List<uint> { Holtburg };
+        if (count == 9)
+        {
+            for (int dx = -1; dx <= 1; dx++)
+            {
+                for (int dy = -1; dy <= 1; dy++)
+                {
+                    if (dx != 0 || dy != 0)
+                    {
+                        ids.Add(LandblockId(cx + dx, cy + dy));
+                    }
+                }
+            }
+        }
+
+        return ids;
+    }
+
+    /// <summary>
+    /// <paramref name="count"/> one-room buildings (6 m square floor, four walls, a doorway to the
+    /// outdoors in the south wall) standing on the terrain, in the east half of the landblock
+    /// (outdoor cells x ≥ 4), two per outdoor cell at most: away from a mover kept in the west half.
+    /// </summary>
+    public static List<CellSurface> Buildings(uint landblockId, TerrainSurface terrain, int count)
+    {
+        var cells = new List<CellSurface>(count);
+        for (int i = 0; i < count; i++)
+        {
+            int outdoor = i % 32;
+            float ox = 96f + ((outdoor / 8) * 24f) + (i < 32 ? 3f : 14f);
+            float oy = ((outdoor % 8) * 24f) + (i < 32 ? 3f : 14f);
+            float oz = terrain.SampleZ(ox + 3f, oy + 3f);
+            uint id = (landblockId & 0xFFFF0000u) | (uint)(0x0100 + i);
+            cells.Add(Room(id, new Vector3(ox, oy, oz), Quaternion.Identity, 6f).Build());
+        }
+
+        return cells;
+    }
+
+    /// <summary>A one-room cell: floor [0, size]², walls 3 m high, a 1 m doorway to the outdoors centred in the south wall.</summary>
+    public static CellBuilder Room(uint cellId, Vector3 origin, Quaternion orientation, float size)
+    {
+        var b = new CellBuilder(cellId, origin, orientation);
+        b.Floor(0, 0, size, size, 0);
+        b.Physics(Wall(0, 0, size, 0, 0, 3));
+        b.Physics(Wall(size, 0, size, size, 0, 3));
+        b.Physics(Wall(size, size, 0, size, 0, 3));
+        b.Physics(Wall(0, size, 0, 0, 0, 3));
+        float mid = size / 2;
+        var inside = new Vector3(mid, mid, 1);
+        b.Portal(0xFFFF, inside, new(mid - 0.5f, 0, 0), new(mid + 0.5f, 0, 0), new(mid + 0.5f, 0, 2.5f), new(mid - 0.5f, 0, 2.5f));
+        return b;
+    }
+
+    public static Vector3[] Square(float minX, float minY, float maxX, float maxY, float z) =>
+        [new(minX, minY, z), new(maxX, minY, z), new(maxX, maxY, z), new(minX, maxY, z)];
+
+    public static Vector3[] Wall(float x0, float y0, float x1, float y1, float z0, float z1) =>
+        [new(x0, y0, z0), new(x1, y1, z0), new(x1, y1, z1), new(x0, y0, z1)];
+
+    /// <summary>The 22 real Holtburg cells, in id order.</summary>
+    public static List<CellFixtureReader.FixtureCell> HoltburgFixtures()
+    {
+        string folder = Path.Combine(AppContext.BaseDirectory, "Fixtures", "holtburg-cells");
+        var cells = new List<CellFixtureReader.FixtureCell>();
+        foreach (string path in Directory.GetFiles(folder, "*.json"))
+        {
+            cells.Add(CellFixtureReader.Read(File.ReadAllText(path), path));
+        }
+
+        cells.Sort((a, b) => a.CellId.CompareTo(b.CellId));
+        return cells;
+    }
+
+    public static List<CellSurface> Surfaces(IEnumerable<CellFixtureReader.FixtureCell> fixtures)
+    {
+        var list = new List<CellSurface>();
+        foreach (CellFixtureReader.FixtureCell f in fixtures)
+        {
+            list.Add(new CellSurface(f.CellId, f.EnvCell, f.CellStruct));
+        }
+
+        return list;
+    }
+
+    /// <summary>Landblock-local XY bounds of a fixture's physics polygons.</summary>
+    public static (Vector2 Min, Vector2 Max) Bounds(CellFixtureReader.FixtureCell cell)
+    {
+        Quaternion q = Quaternion.Normalize(cell.EnvCell.Position.Orientation);
+        Vector2 min = new(float.MaxValue), max = new(float.MinValue);
+        foreach (Polygon polygon in cell.CellStruct.PhysicsPolygons.Values)
+        {
+            foreach (short id in polygon.VertexIds)
+            {
+                Vector3 v = cell.EnvCell.Position.Origin + Vector3.Transform(cell.CellStruct.VertexArray.Vertices[(ushort)id].Origin, q);
+                min = Vector2.Min(min, new Vector2(v.X, v.Y));
+                max = Vector2.Max(max, new Vector2(v.X, v.Y));
+            }
+        }
+
+        return (min, max);
+    }
+
+    /// <summary>A random horizontal move of length in [min, max] metres.</summary>
+    public static Vector3 RandomDelta(Random random, float min, float max)
+    {
+        double angle = random.NextDouble() * 2 * Math.PI;
+        float length = min + ((max - min) * random.NextSingle());
+        return new Vector3(length * (float)Math.Cos(angle), length * (float)Math.Sin(angle), 0f);
+    }
+
+    /// <summary>Outdoor cell number (0x0001..0x0040) of a landblock-local point.</summary>
+    public static uint OutdoorCell(float x, float y)
+    {
+        int cx = Math.Clamp((int)(x / 24f), 0, 7), cy = Math.Clamp((int)(y / 24f), 0, 7);
+        return (uint)((cx * 8) + cy + 1);
+    }
+}
+
+/// <summary>Builds an <see cref="EnvCell"/> + <see cref="CellStruct"/> from cell-local polygons.</summary>
+internal sealed class CellBuilder
+{
+    private readonly Dictionary<Vector3, short> _vertexIds = [];
+    private ushort _nextPhysics;
+    private ushort _nextDrawing;
+
+    public CellBuilder(uint cellId, Vector3 origin, Quaternion orientation)
+    {
+        CellId = cellId;
+        EnvCell = new EnvCell { Id = cellId, Position = new Frame { Origin = origin, Orientation = orientation } };
+    }
+
+    public uint CellId { get; }
+
+    public EnvCell EnvCell { get; }
+
+    public CellStruct CellStruct { get; } = new();
+
+    public CellBuilder Physics(Vector3[] vertices)
+    {
+        CellStruct.PhysicsPolygons.Add(_nextPhysics++, MakePolygon(vertices));
+        return this;
+    }
+
+    public CellBuilder Floor(float minX, float minY, float maxX, float maxY, float z) =>
+        Physics(World.Square(minX, minY, maxX, maxY, z));
+
+    /// <summary>A portal to <paramref name="otherCell"/> (low 16 bits; 0xFFFF outdoors); <paramref name="cellSide"/> is a cell-local point inside this cell.</summary>
+    public CellBuilder Portal(ushort otherCell, Vector3 cellSide, params Vector3[] vertices)
+    {
+        ushort id = (ushort)(1000 + _nextDrawing++);
+        CellStruct.Polygons.Add(id, MakePolygon(vertices));
+        CellStruct.Portals.Add(id);
+        Vector3 normal = Vector3.Cross(vertices[1] - vertices[0], vertices[2] - vertices[0]);
+        bool positive = Vector3.Dot(normal, cellSide - vertices[0]) > 0f;
+        EnvCell.CellPortals.Add(new CellPortal
+        {
+            OtherCellId = otherCell,
+            PolygonId = id,
+            Flags = PortalFlags.ExactMatch | (positive ? PortalFlags.PortalSide : PortalFlags.None),
+        });
+        return this;
+    }
+
+    public CellSurface Build() => new(CellId, EnvCell, CellStruct);
+
+    private Polygon MakePolygon(Vector3[] vertices)
+    {
+        var polygon = new Polygon();
+        foreach (Vector3 v in vertices)
+        {
+            if (!_vertexIds.TryGetValue(v, out short id))
+            {
+                id = (short)_vertexIds.Count;
+                _vertexIds.Add(v, id);
+                CellStruct.VertexArray.Vertices.Add((ushort)id, new SWVertex { Origin = v });
+            }
+
+            polygon.VertexIds.Add(id);
+        }
+
+        return polygon;
+    }
+}
