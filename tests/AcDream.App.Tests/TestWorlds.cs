@@ -38,8 +38,7 @@ internal static class TestWorlds
     }
 
     /// <summary>A horizontal square, counter-clockwise seen from above (normal +Z), cell-local.</summary>
-    public static Vector3[] Square(float half, float z) =>
-        [new(-half, -half, z), new(half, -half, z), new(half, half, z), new(-half, half, z)];
+    public static Vector3[] Square(float half, float z) => CellBuilder.Square(-half, -half, half, half, z);
 
     /// <summary>
     /// A cell at landblock-local <paramref name="origin"/> (no rotation) with optional floor and
@@ -47,43 +46,18 @@ internal static class TestWorlds
     /// </summary>
     public static CellSurface Cell(uint cellId, Vector3 origin, float? floorZ, params (ushort Other, float Z, bool CellAbove)[] openings)
     {
-        var envCell = new EnvCell { Id = cellId, Position = new Frame { Origin = origin } };
-        var cellStruct = new CellStruct();
-        var ids = new Dictionary<Vector3, short>();
-        Polygon Polygon(Vector3[] vertices)
-        {
-            var polygon = new Polygon();
-            foreach (Vector3 v in vertices)
-            {
-                if (!ids.TryGetValue(v, out short id))
-                {
-                    id = (short)ids.Count;
-                    ids.Add(v, id);
-                    cellStruct.VertexArray.Vertices.Add((ushort)id, new SWVertex { Origin = v });
-                }
-
-                polygon.VertexIds.Add(id);
-            }
-
-            return polygon;
-        }
-
+        var builder = new CellBuilder(cellId, origin);
         if (floorZ is float z)
         {
-            cellStruct.PhysicsPolygons.Add(0, Polygon(Square(5f, z)));
+            builder.Physics(Square(5f, z));
         }
 
-        ushort next = 100;
         foreach ((ushort other, float openingZ, bool cellAbove) in openings)
         {
-            cellStruct.Polygons.Add(next, Polygon(Square(2f, openingZ)));
-            cellStruct.Portals.Add(next);
-            // The square's normal is +Z: the cell is on its positive side when it lies above.
-            envCell.CellPortals.Add(new CellPortal { OtherCellId = other, PolygonId = next, Flags = PortalFlags.ExactMatch | (cellAbove ? PortalFlags.PortalSide : PortalFlags.None) });
-            next++;
+            builder.Portal(other, new Vector3(0f, 0f, openingZ + (cellAbove ? 1f : -1f)), Square(2f, openingZ));
         }
 
-        return new CellSurface(cellId, envCell, cellStruct);
+        return builder.Build();
     }
 }
 

@@ -66,88 +66,13 @@ internal static class TestData
         new(FlatHeights(0), ConstantTable(z), landblockId);
 
     /// <summary>A horizontal square floor polygon, counter-clockwise from above (cell-local).</summary>
-    public static Vector3[] Square(float minX, float minY, float maxX, float maxY, float z) =>
-        [new(minX, minY, z), new(maxX, minY, z), new(maxX, maxY, z), new(minX, maxY, z)];
+    public static Vector3[] Square(float minX, float minY, float maxX, float maxY, float z) => CellBuilder.Square(minX, minY, maxX, maxY, z);
 
     /// <summary>A vertical wall from (x0, y0) to (x1, y1), from z0 up to z1.</summary>
     public static Vector3[] Wall(float x0, float y0, float x1, float y1, float z0, float z1) =>
         [new(x0, y0, z0), new(x1, y1, z0), new(x1, y1, z1), new(x0, y0, z1)];
 
     public static float[] ToFloatArray(this IEnumerable<float> values) => values.ToArray();
-}
-
-/// <summary>Builds an <see cref="EnvCell"/> + <see cref="CellStruct"/> from cell-local polygons.</summary>
-internal sealed class CellBuilder
-{
-    private readonly Dictionary<Vector3, short> _vertexIds = [];
-    private ushort _nextPhysics;
-    private ushort _nextDrawing;
-
-    public CellBuilder(uint cellId, Vector3 origin = default, Quaternion? orientation = null)
-    {
-        CellId = cellId;
-        EnvCell = new EnvCell
-        {
-            Id = cellId,
-            Position = new Frame { Origin = origin, Orientation = orientation ?? Quaternion.Identity },
-        };
-    }
-
-    public uint CellId { get; }
-
-    public EnvCell EnvCell { get; }
-
-    public CellStruct CellStruct { get; } = new();
-
-    /// <summary>Adds a physics polygon (floor, wall or ceiling, by its winding).</summary>
-    public CellBuilder Physics(params Vector3[] vertices)
-    {
-        CellStruct.PhysicsPolygons.Add(_nextPhysics++, MakePolygon(vertices));
-        return this;
-    }
-
-    public CellBuilder Floor(float minX, float minY, float maxX, float maxY, float z) =>
-        Physics(TestData.Square(minX, minY, maxX, maxY, z));
-
-    /// <summary>
-    /// Adds a portal polygon to <paramref name="otherCell"/> (low 16 bits, 0xFFFF outdoors). The side
-    /// flag is set from <paramref name="cellSide"/>, a point inside this cell (cell-local).
-    /// </summary>
-    public CellBuilder Portal(ushort otherCell, Vector3 cellSide, params Vector3[] vertices)
-    {
-        ushort id = (ushort)(1000 + _nextDrawing++);
-        CellStruct.Polygons.Add(id, MakePolygon(vertices));
-        CellStruct.Portals.Add(id);
-        Vector3 normal = Vector3.Normalize(Vector3.Cross(vertices[1] - vertices[0], vertices[2] - vertices[0]));
-        bool positive = Vector3.Dot(normal, cellSide - vertices[0]) > 0f;
-        EnvCell.CellPortals.Add(new CellPortal
-        {
-            OtherCellId = otherCell,
-            PolygonId = id,
-            Flags = PortalFlags.ExactMatch | (positive ? PortalFlags.PortalSide : PortalFlags.None),
-        });
-        return this;
-    }
-
-    public CellSurface Build() => new(CellId, EnvCell, CellStruct);
-
-    private Polygon MakePolygon(Vector3[] vertices)
-    {
-        var polygon = new Polygon();
-        foreach (Vector3 v in vertices)
-        {
-            if (!_vertexIds.TryGetValue(v, out short id))
-            {
-                id = (short)_vertexIds.Count;
-                _vertexIds.Add(v, id);
-                CellStruct.VertexArray.Vertices.Add((ushort)id, new SWVertex { Origin = v });
-            }
-
-            polygon.VertexIds.Add(id);
-        }
-
-        return polygon;
-    }
 }
 
 /// <summary>The real Holtburg cells of <c>Fixtures/holtburg-cells</c>.</summary>
