@@ -15,19 +15,7 @@ internal static class TestWorlds
     public static float[] LinearTable() => Enumerable.Range(0, 256).Select(i => (float)i).ToArray();
 
     /// <summary>Height indices from a function of the vertex indices (x, y), x-major.</summary>
-    public static byte[] Heights(Func<int, int, int> height)
-    {
-        var heights = new byte[81];
-        for (int x = 0; x < 9; x++)
-        {
-            for (int y = 0; y < 9; y++)
-            {
-                heights[(x * 9) + y] = checked((byte)height(x, y));
-            }
-        }
-
-        return heights;
-    }
+    public static byte[] Heights(Func<int, int, int> height) => CellBuilder.Heights(height);
 
     /// <summary>An engine centred on Holtburg with one landblock of terrain (linear table: index = metres) and the given cells.</summary>
     public static PhysicsEngine Engine(byte[] heights, params CellSurface[] cells)

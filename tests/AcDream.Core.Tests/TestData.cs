@@ -40,19 +40,7 @@ internal static class TestData
     public static byte[] FlatHeights(byte value) => Enumerable.Repeat(value, 81).ToArray();
 
     /// <summary>Heights from a function of the vertex indices (x, y), x-major.</summary>
-    public static byte[] Heights(Func<int, int, int> height)
-    {
-        var heights = new byte[81];
-        for (int x = 0; x < 9; x++)
-        {
-            for (int y = 0; y < 9; y++)
-            {
-                heights[(x * 9) + y] = checked((byte)height(x, y));
-            }
-        }
-
-        return heights;
-    }
+    public static byte[] Heights(Func<int, int, int> height) => CellBuilder.Heights(height);
 
     public static byte[] RandomHeights(Random random)
     {

@@ -4,7 +4,7 @@ using AcDream.Core.Physics;
 
 namespace AcDream.Testing;
 
-// Shared by the test and benchmark projects (linked, not referenced): one builder of fake cells.
+// Shared by the test and benchmark projects (linked, not referenced): one builder of fake dat data.
 
 /// <summary>Builds an <see cref="EnvCell"/> + <see cref="CellStruct"/> from cell-local polygons.</summary>
 internal sealed class CellBuilder
@@ -38,6 +38,21 @@ internal sealed class CellBuilder
 
     public CellBuilder Floor(float minX, float minY, float maxX, float maxY, float z) =>
         Physics(Square(minX, minY, maxX, maxY, z));
+
+    /// <summary>LandBlock.Height bytes (81, x-major) from a function of the vertex indices (x, y).</summary>
+    public static byte[] Heights(Func<int, int, int> height)
+    {
+        var heights = new byte[81];
+        for (int x = 0; x < 9; x++)
+        {
+            for (int y = 0; y < 9; y++)
+            {
+                heights[(x * 9) + y] = checked((byte)height(x, y));
+            }
+        }
+
+        return heights;
+    }
 
     /// <summary>A horizontal rectangle, counter-clockwise seen from above (normal +Z), cell-local.</summary>
     public static Vector3[] Square(float minX, float minY, float maxX, float maxY, float z) =>
