@@ -471,7 +471,20 @@ internal static class AccuracyReport
     private static void DoorsOnly(TextWriter o)
     {
         const int Moves = 20000;
+        o.WriteLine($"## Doors only on vs off ({Moves} moves per row starting 1 mm to 0.5 m outside 64 one-room buildings with a 1 m door)");
+        o.WriteLine();
+        o.WriteLine("| doors only | moves | entries into a building | through a wall (not across the door opening) | refused at the door (crossed the opening, stayed out) |");
+        o.WriteLine("| --- | --- | ---: | ---: | ---: |");
+        foreach ((float min, float max) in new[] { (0.1f, 0.3f), (0.3f, 1.5f) })
+        {
+            DoorsOnlyRow(o, Moves, min, max);
+        }
 
+        o.WriteLine();
+    }
+
+    private static void DoorsOnlyRow(TextWriter o, int moves, float minMove, float maxMove)
+    {
         // Starts within 1 mm of a floor's edge are on that floor already (0.2 mm tolerance): excluded.
         const float Margin = 0.001f;
         var random = new Random(5);
@@ -479,10 +492,10 @@ internal static class AccuracyReport
         var terrain = new TerrainSurface(new byte[81], World.ConstantTable(10f), World.Holtburg);
         engine.AddLandblock(World.Holtburg, terrain, World.Buildings(World.Holtburg, terrain, 64));
         var on = new MovementOptions { DoorsOnly = true };
-        int literalEntries = 0, literalThroughWall = 0, doorsEntries = 0, doorsThroughWall = 0;
-        for (int m = 0; m < Moves; m++)
+        int literalEntries = 0, literalThroughWall = 0, literalRefused = 0, doorsEntries = 0, doorsThroughWall = 0, doorsRefused = 0;
+        for (int m = 0; m < moves; m++)
         {
-            // Start within 0.5 m outside one of the 64 rooms (6 m squares), move 0.1–0.3 m.
+            // Start within 0.5 m outside one of the 64 rooms (6 m squares).
             int i = random.Next(64);
             int outdoor = i % 32;
             float ox = 96f + ((outdoor / 8) * 24f) + (i < 32 ? 3f : 14f), oy = ((outdoor % 8) * 24f) + (i < 32 ? 3f : 14f);
@@ -496,30 +509,30 @@ internal static class AccuracyReport
 
             var pos = new Vector3(x, y, 10f);
             uint cell = 0xA9B40000u | World.OutdoorCell(x, y);
-            Vector3 delta = World.RandomDelta(random, 0.1f, 0.3f);
+            Vector3 delta = World.RandomDelta(random, minMove, maxMove);
             bool door = CrossesDoor(new Vector2(x, y), new Vector2(x + delta.X, y + delta.Y), ox, oy);
             ResolveResult a = engine.Resolve(pos, cell, delta, World.PlayerStepUp);
             ResolveResult b = engine.Resolve(pos, cell, delta, World.PlayerStepUp, in on);
-            if ((a.CellId & 0xFFFF) >= 0x100)
-            {
-                literalEntries++;
-                literalThroughWall += door ? 0 : 1;
-            }
-
-            if ((b.CellId & 0xFFFF) >= 0x100)
-            {
-                doorsEntries++;
-                doorsThroughWall += door ? 0 : 1;
-            }
+            Count(a, door, ref literalEntries, ref literalThroughWall, ref literalRefused);
+            Count(b, door, ref doorsEntries, ref doorsThroughWall, ref doorsRefused);
         }
 
-        o.WriteLine($"## Doors only on vs off ({Moves} moves of 0.1–0.3 m starting 1 mm to 0.5 m outside 64 one-room buildings with a 1 m door)");
-        o.WriteLine();
-        o.WriteLine("| doors only | entries into a building | through a wall (not across the door opening) |");
-        o.WriteLine("| --- | ---: | ---: |");
-        o.WriteLine($"| off (literal) | {literalEntries} | {literalThroughWall} ({Pct(literalThroughWall, Math.Max(literalEntries, 1))}) |");
-        o.WriteLine($"| on | {doorsEntries} | {doorsThroughWall} |");
-        o.WriteLine();
+        string range = FormattableString.Invariant($"{minMove}–{maxMove} m");
+        o.WriteLine($"| off (literal) | {range} | {literalEntries} | {literalThroughWall} ({Pct(literalThroughWall, Math.Max(literalEntries, 1))}) | {literalRefused} |");
+        o.WriteLine($"| on | {range} | {doorsEntries} | {doorsThroughWall} | {doorsRefused} |");
+
+        static void Count(ResolveResult r, bool door, ref int entries, ref int throughWall, ref int refused)
+        {
+            if ((r.CellId & 0xFFFF) >= 0x100)
+            {
+                entries++;
+                throughWall += door ? 0 : 1;
+            }
+            else if (door)
+            {
+                refused++;
+            }
+        }
     }
 
     /// <summary>Whether p0 → p1 crosses the south wall's door opening (y = oy, x in [ox + 2.5, ox + 3.5]) inward.</summary>

@@ -259,7 +259,9 @@ public sealed class PhysicsEngine
 
         if (TryEnterCell(there, candidate, pos.Z, stepUp, out int cellIndex, out float floorZ))
         {
-            if (options.DoorsOnly && !EntersByDoor(there, cellIndex, candidate - delta, candidate, pos.Z, stepUp))
+            if (options.DoorsOnly
+                && !StartsOverFloor(there, cellIndex, candidate - delta, pos.Z, stepUp)
+                && !TryEnterByDoor(there, candidate - delta, candidate, pos.Z, stepUp, out cellIndex, out floorZ))
             {
                 return new ResolveResult(pos, hereCellId, true); // rejected: the building's outer wall
             }
@@ -292,31 +294,63 @@ public sealed class PhysicsEngine
             ? new ResolveResult(ground with { Z = z }, cellId, false)
             : new ResolveResult(ground, cellId, true);
 
+    /// <summary>Doors only: whether the mover already stands over the cell's floor (within the step height), so entering it crosses no wall.</summary>
+    private static bool StartsOverFloor(LandblockEntry entry, int cellIndex, Vector2 p0, float z, float stepUp) =>
+        entry.Cells[cellIndex].TrySampleFloor(p0.X, p0.Y, z, out float floorHere) && MathF.Abs(floorHere - z) <= stepUp;
+
     /// <summary>
-    /// Doors only: whether a move from <paramref name="p0"/> to <paramref name="p1"/> (landblock-local)
-    /// enters cell <paramref name="cellIndex"/> across one of its portals to the outdoors, or starts
-    /// over that cell's floor already.
+    /// Doors only: the floor a move from <paramref name="p0"/> to <paramref name="p1"/> (landblock-local)
+    /// reaches by passing in through the first portal to the outdoors it crosses (of the cells over the
+    /// outdoor cells of p0 and p1), continued as an indoor move from that door's cell, so a door cell
+    /// thinner than the move is passed, not mistaken for a wall. False when no door is crossed, the
+    /// move ends on no floor beyond it, or that floor is more than the step height up.
     /// </summary>
-    private static bool EntersByDoor(LandblockEntry entry, int cellIndex, Vector2 p0, Vector2 p1, float z, float stepUp)
+    private bool TryEnterByDoor(LandblockEntry entry, Vector2 p0, Vector2 p1, float z, float stepUp, out int cellIndex, out float floorZ)
     {
-        CellSurface cell = entry.Cells[cellIndex];
-        if (cell.TrySampleFloor(p0.X, p0.Y, z, out float floorHere) && MathF.Abs(floorHere - z) <= stepUp)
+        int doorCell = -1;
+        float doorT = float.MaxValue;
+        FirstDoor(entry, entry.EntryBuckets[OutdoorCellNumber(p0) - 1], p0, p1, z, stepUp, ref doorCell, ref doorT);
+        FirstDoor(entry, entry.EntryBuckets[OutdoorCellNumber(p1) - 1], p0, p1, z, stepUp, ref doorCell, ref doorT);
+        cellIndex = -1;
+        floorZ = 0f;
+        if (doorCell < 0)
         {
-            return true;
+            return false;
         }
 
-        ReadOnlySpan<PortalShape> shapes = cell.PortalShapes;
-        int[] targets = entry.PortalTargets[cellIndex];
-        for (int k = 0; k < shapes.Length; k++)
+        Landing landing = FindLanding(entry, doorCell, p0, p1, z, stepUp, depth: 0, from: -1, tStart: doorT, falling: false);
+        if (landing.Kind != Arrival.Floor || landing.Z - z > stepUp)
         {
-            // Inward across the portal is outward along the reversed move.
-            if (targets[k] == LandblockEntry.Outdoors && shapes[k].Kind == PortalKind.Vertical && shapes[k].CrossingFraction(p1, p0, z, stepUp) >= 0f)
+            return false;
+        }
+
+        cellIndex = landing.CellIndex;
+        floorZ = landing.Z;
+        return true;
+    }
+
+    /// <summary>The cell (among <paramref name="cells"/>) whose portal to the outdoors the move crosses inward first.</summary>
+    private static void FirstDoor(LandblockEntry entry, int[] cells, Vector2 p0, Vector2 p1, float z, float stepUp, ref int doorCell, ref float doorT)
+    {
+        foreach (int i in cells)
+        {
+            ReadOnlySpan<PortalShape> shapes = entry.Cells[i].PortalShapes;
+            int[] targets = entry.PortalTargets[i];
+            for (int k = 0; k < shapes.Length; k++)
             {
-                return true;
+                if (targets[k] != LandblockEntry.Outdoors || shapes[k].Kind != PortalKind.Vertical)
+                {
+                    continue;
+                }
+
+                float t = shapes[k].InwardCrossingFraction(p0, p1, z, stepUp);
+                if (t >= 0f && t < doorT)
+                {
+                    doorCell = i;
+                    doorT = t;
+                }
             }
         }
-
-        return false;
     }
 
     private ResolveResult ResolveIndoor(Vector3 pos, uint cellId, Vector2 delta, float stepUp, in MovementOptions options, out bool rejected)
@@ -372,6 +406,7 @@ public sealed class PhysicsEngine
 
         int doorway = -1;
         float doorwayT = float.MaxValue;
+        bool throughWall = false;
         for (int k = 0; k < shapes.Length; k++)
         {
             if (shapes[k].Kind != PortalKind.Vertical || (targets[k] == from && from >= 0))
@@ -379,7 +414,8 @@ public sealed class PhysicsEngine
                 continue;
             }
 
-            float t = shapes[k].CrossingFraction(p0, p1, z, stepUp);
+            float t = shapes[k].CrossingFraction(p0, p1, z, stepUp, out bool crossesPlane);
+            throughWall |= crossesPlane && t < 0f;
             if (t >= tStart && t < doorwayT)
             {
                 doorway = k;
@@ -419,9 +455,10 @@ public sealed class PhysicsEngine
             }
         }
 
-        if (depth == 0)
+        if (depth == 0 && !throughWall)
         {
-            // Portal geometry decided nothing: any portal neighbour with a floor under p1 takes the mover.
+            // Portal geometry decided nothing: any portal neighbour with a floor under p1 takes the
+            // mover. Not when the move passed a doorway's plane beside its opening: that is the wall.
             int best = -1;
             float bestZ = 0f, bestDistance = float.MaxValue;
             foreach (int target in targets)

@@ -95,28 +95,51 @@ internal sealed class PortalShape
     /// For a vertical portal: the fraction t (0..1) along the horizontal move p0 → p1, made with the
     /// feet at <paramref name="z"/>, where the mover passes out through the doorway; or −1 when the
     /// move ends on the cell's side of the portal plane or passes beside, above or more than
-    /// <paramref name="stepUp"/> below the opening.
+    /// <paramref name="stepUp"/> below the opening. <paramref name="crossesPlane"/> says whether the
+    /// move ends beyond the plane at all: true with −1 means it went through the wall beside the opening.
     /// </summary>
-    public float CrossingFraction(Vector2 p0, Vector2 p1, float z, float stepUp)
+    public float CrossingFraction(Vector2 p0, Vector2 p1, float z, float stepUp, out bool crossesPlane)
     {
         var o = new Vector3(p0.X - Origin.X, p0.Y - Origin.Y, z - Origin.Z);
         float d0 = Vector3.Dot(OutNormal, o);
         float d1 = d0 + (OutNormal.X * (p1.X - p0.X)) + (OutNormal.Y * (p1.Y - p0.Y));
-        if (!(d1 > 0f) || d1 <= d0)
+        crossesPlane = d1 > 0f && d1 > d0;
+        if (!crossesPlane)
         {
             return -1f;
         }
 
         float t = d0 >= 0f ? 0f : -d0 / (d1 - d0);
-        Vector2 q = p0 + ((p1 - p0) * t);
-        float along = Vector2.Dot(Tangent, new Vector2(q.X - Origin.X, q.Y - Origin.Y));
+        return WithinOpening(p0 + ((p1 - p0) * t), z, stepUp) ? t : -1f;
+    }
+
+    /// <summary>
+    /// For a vertical portal: the fraction t (0..1) along p0 → p1 where a mover outside the cell
+    /// passes in through the doorway (ending on the plane, within
+    /// <see cref="PhysicsConstants.EdgeTolerance"/>, or past it), with the same opening test as
+    /// <see cref="CrossingFraction"/>; or −1.
+    /// </summary>
+    public float InwardCrossingFraction(Vector2 p0, Vector2 p1, float z, float stepUp)
+    {
+        var o = new Vector3(p0.X - Origin.X, p0.Y - Origin.Y, z - Origin.Z);
+        float d0 = Vector3.Dot(OutNormal, o);
+        float d1 = d0 + (OutNormal.X * (p1.X - p0.X)) + (OutNormal.Y * (p1.Y - p0.Y));
         const float tol = PhysicsConstants.EdgeTolerance;
-        if (along < TMin - tol || along > TMax + tol || z > ZMax + tol || z < ZMin - stepUp - tol)
+        if (!(d0 >= -tol) || !(d1 <= tol) || !(d1 < d0))
         {
             return -1f;
         }
 
-        return t;
+        float t = d0 <= 0f ? 0f : Math.Min(d0 / (d0 - d1), 1f);
+        return WithinOpening(p0 + ((p1 - p0) * t), z, stepUp) ? t : -1f;
+    }
+
+    /// <summary>Whether a point of the portal's plane, with the feet at <paramref name="z"/>, is in the opening.</summary>
+    private bool WithinOpening(Vector2 q, float z, float stepUp)
+    {
+        float along = Vector2.Dot(Tangent, new Vector2(q.X - Origin.X, q.Y - Origin.Y));
+        const float tol = PhysicsConstants.EdgeTolerance;
+        return along >= TMin - tol && along <= TMax + tol && z <= ZMax + tol && z >= ZMin - stepUp - tol;
     }
 
     /// <summary>

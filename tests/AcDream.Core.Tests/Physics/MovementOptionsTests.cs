@@ -282,4 +282,41 @@ public class MovementOptionsTests
             return sink;
         }
     }
+
+    [Theory]
+    [InlineData(0.1f)]
+    [InlineData(0.45f)]
+    [InlineData(0.6f)]
+    [InlineData(1.0f)]
+    [InlineData(2.0f)]
+    public void DoorsOnly_MoveLongerThanTheDoorCell_PassesItIntoTheRoom(float stepLength)
+    {
+        // 0x0145 is 0.4 m deep (x 136.3..136.7): a longer move jumps from the terrain past it into 0x0143.
+        PhysicsEngine engine = HoltburgEngine();
+        foreach (MovementOptions options in new[] { new MovementOptions { DoorsOnly = true }, MovementOptions.Player })
+        {
+            for (int start = 0; start < 20; start++)
+            {
+                var pos = new Vector3(134.0f + (start * 0.05f), 5.15f, GroundZ);
+                uint cell = 0xA9B40000u;
+                for (int frame = 0; frame < 80 && pos.X < 138f; frame++)
+                {
+                    ResolveResult r = engine.Resolve(pos, cell, new Vector3(stepLength, 0, 0), Step, options);
+                    r.Position.Should().NotBe(pos, $"{options}, step {stepLength} m, start x {134.0f + (start * 0.05f)}: stuck at {pos} in 0x{cell:X8}");
+                    (pos, cell) = (r.Position, r.CellId);
+                }
+
+                cell.Should().Be(0xA9B40143u, $"{options}, step {stepLength} m: through the door into the main room");
+            }
+        }
+    }
+
+    [Fact]
+    public void DoorsOnly_LongMoveThroughTheWallBesideTheDoor_IsRejected()
+    {
+        // Same 1 m move as through the door, but at y 7, beside the doorway (y 4.2..6.1): the wall.
+        PhysicsEngine engine = HoltburgEngine();
+        var pos = new Vector3(135.9f, 7f, GroundZ);
+        engine.Resolve(pos, 0, new Vector3(1f, 0, 0), Step, new MovementOptions { DoorsOnly = true }).Position.Should().Be(pos);
+    }
 }

@@ -283,4 +283,22 @@ public class PhysicsEngineTests
         engine.AddLandblock(Holtburg, new TerrainSurface(Heights((x, y) => x + y), LinearTable()), []);
         engine.Resolve(new Vector3(12, 12, 2), 0, Vector3.Zero, Step).Position.Z.Should().BeApproximately(2f, 1e-5f);
     }
+
+    [Fact]
+    public void Resolve_AdjoiningRooms_WallBesideTheDoorwayBlocks()
+    {
+        // Room A (x 10..14) and room B (x 14..18) share the wall x = 14; its doorway spans y 11.5..12.5.
+        var inA = new Vector3(12, 12, 1);
+        var inB = new Vector3(16, 12, 1);
+        CellSurface a = new CellBuilder(0xA9B40100u).Floor(10, 10, 14, 14, 0).Portal(0x0101, inA, Wall(14, 11.5f, 14, 12.5f, 0, 2)).Build();
+        CellSurface b = new CellBuilder(0xA9B40101u).Floor(14, 10, 18, 14, 0).Portal(0x0100, inB, Wall(14, 12.5f, 14, 11.5f, 0, 2)).Build();
+        PhysicsEngine engine = MakeEngine(FlatTerrain(-20f), a, b);
+
+        engine.Resolve(new Vector3(13.9f, 12f, 0), 0xA9B40100u, new Vector3(0.2f, 0, 0), Step).CellId
+            .Should().Be(0xA9B40101u, "through the doorway");
+        var besideDoor = new Vector3(13.9f, 10.5f, 0);
+        engine.Resolve(besideDoor, 0xA9B40100u, new Vector3(0.2f, 0, 0), Step)
+            .Should().Be(new ResolveResult(besideDoor, 0xA9B40100u, true), "beside the doorway is the wall, though B's floor lies beyond it");
+        engine.Resolve(besideDoor, 0xA9B40100u, new Vector3(0.2f, 0, 0), Step, MovementOptions.Player).Position.Should().Be(besideDoor);
+    }
 }
