@@ -59,8 +59,6 @@ internal static class TestData
     /// <summary>A vertical wall from (x0, y0) to (x1, y1), from z0 up to z1.</summary>
     public static Vector3[] Wall(float x0, float y0, float x1, float y1, float z0, float z1) =>
         [new(x0, y0, z0), new(x1, y1, z0), new(x1, y1, z1), new(x0, y0, z1)];
-
-    public static float[] ToFloatArray(this IEnumerable<float> values) => values.ToArray();
 }
 
 /// <summary>The real Holtburg cells of <c>Fixtures/holtburg-cells</c>.</summary>

@@ -20,8 +20,6 @@ internal static class CellIds
 
     public static uint Prefix(int landblockX, int landblockY) => ((uint)landblockX << 24) | ((uint)landblockY << 16);
 
-    public static bool IsOutdoor(uint id) => (id & 0xFFFF) < FirstIndoor;
-
     public static bool IsIndoor(uint id) => (id & 0xFFFF) is >= FirstIndoor and <= LastIndoor;
 
     /// <summary>Dense index of a landblock for lookup tables: X·256 + Y.</summary>

@@ -117,9 +117,6 @@ public sealed class CellSurface
     /// <summary>Whether the cell has any walkable floor (a stairwell shaft has none).</summary>
     internal bool HasFloor => _floors.Length > 0;
 
-    /// <summary>Number of floor triangles after fan triangulation.</summary>
-    internal int FloorTriangleCount => _floors.Length;
-
     /// <summary>Landblock-local XY bounds of the floor, grown by the edge tolerance; empty when there is no floor.</summary>
     internal Vector2 FloorMin { get; }
 

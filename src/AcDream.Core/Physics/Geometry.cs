@@ -24,16 +24,13 @@ internal static class Geometry
         }
 
         double length = Math.Sqrt((nx * nx) + (ny * ny) + (nz * nz));
-        if (!(length > MinDoubleArea))
+        if (!(length > FloorTriangle.MinDoubleArea))
         {
             return Vector3.Zero;
         }
 
         return new Vector3((float)(nx / length), (float)(ny / length), (float)(nz / length));
     }
-
-    /// <summary>Twice the smallest polygon area (m²) with a defined normal; see <see cref="FloorTriangle.MinDoubleArea"/>.</summary>
-    public const double MinDoubleArea = FloorTriangle.MinDoubleArea;
 
     /// <summary>
     /// Whether <paramref name="p"/> is inside the polygon <paramref name="outline"/> (even-odd rule,

@@ -190,13 +190,6 @@ public sealed class TerrainSurface
         return (float)(1.0 / Math.Sqrt(1.0 + (gx * gx) + (gy * gy)));
     }
 
-    /// <summary>Outdoor cell number of a point already known to be finite.</summary>
-    internal uint CellNumberUnchecked(float localX, float localY)
-    {
-        Locate(localX, localY, out int cx, out int cy, out _, out _);
-        return (uint)(cx * PhysicsConstants.CellsPerSide + cy + 1);
-    }
-
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static void Locate(float x, float y, out int cx, out int cy, out double u, out double v)
     {
