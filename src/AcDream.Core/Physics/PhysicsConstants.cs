@@ -56,4 +56,34 @@ public static class PhysicsConstants
     /// room, or opening → shaft → cellar). Bounds the search on cyclic portal graphs.
     /// </summary>
     public const int MaxPortalHops = 4;
+
+    /// <summary>
+    /// How far (metres) the feet may be from the terrain or floor under them and still stand on it:
+    /// 0.2 mm. <see cref="ResolveResult.IsOnGround"/> is true exactly when the returned Z is within
+    /// this of the ground under the returned XY; a mover this close above the ground, or below it,
+    /// is put on it.
+    /// </summary>
+    public const float GroundTolerance = 0.0002f;
+
+    /// <summary>
+    /// Most cells one move may visit in its portal search, in all (not per path). Real moves visit
+    /// three or four; the bound keeps hostile portal graphs (cells with many openings into each other)
+    /// from costing more than a few microseconds.
+    /// </summary>
+    public const int MaxCellVisits = 32;
+
+    /// <summary>
+    /// With <see cref="MovementOptions.DoorsOnly"/>: a building's floor from this far (metres) below an
+    /// outdoor mover's feet up to <see cref="StoreyAbove"/> above them is a storey the mover would be
+    /// standing in, so the floor's outline is the building's outer wall there. A cellar deeper than
+    /// this (Holtburg's is 4 m down) is walked over.
+    /// </summary>
+    public const float StoreyBelow = 3f;
+
+    /// <summary>
+    /// With <see cref="MovementOptions.DoorsOnly"/>: see <see cref="StoreyBelow"/>; a floor higher than
+    /// this (metres, a player's height) above the feet is overhead, and the mover walks under it
+    /// (Holtburg's cottage has an upper storey reaching out over its yard, 3 m up).
+    /// </summary>
+    public const float StoreyAbove = 2f;
 }

@@ -251,34 +251,44 @@ public sealed class PhysicsEngine
         int toX = lbX, toY = lbY;
         Wrap(ref candidate.X, ref toX);
         Wrap(ref candidate.Y, ref toY);
+        candidate = Representable(toX, toY, candidate);
+        Wrap(ref candidate.X, ref toX); // rounding can put it on the far seam
+        Wrap(ref candidate.Y, ref toY);
         LandblockEntry? there = GetEntry(toX, toY);
         if (there is null)
         {
-            return new ResolveResult(pos, hereCellId, true); // rejected: unloaded land or off the world
+            return Refuse(lbX, lbY, local, pos.Z, here.Terrain.SampleZUnchecked(local.X, local.Y), hereCellId, in options); // unloaded land or off the world
         }
 
+        Vector2 start = candidate - delta; // the mover, in the candidate's landblock frame
         if (TryEnterCell(there, candidate, pos.Z, stepUp, out int cellIndex, out float floorZ))
         {
             if (options.DoorsOnly
-                && !StartsOverFloor(there, cellIndex, candidate - delta, pos.Z, stepUp)
-                && !TryEnterByDoor(there, candidate - delta, candidate, pos.Z, stepUp, out cellIndex, out floorZ))
+                && !StartsOverFloor(there, cellIndex, start, pos.Z, stepUp)
+                && !TryEnterByDoor(there, start, candidate, pos.Z, stepUp, out cellIndex, out floorZ))
             {
-                return new ResolveResult(pos, hereCellId, true); // rejected: the building's outer wall
+                return Refuse(lbX, lbY, local, pos.Z, here.Terrain.SampleZUnchecked(local.X, local.Y), hereCellId, in options); // the building's outer wall
             }
 
             rejected = false;
             return Land(ToWorld(toX, toY, candidate, floorZ), pos.Z, there.Cells[cellIndex].CellId, in options);
         }
 
+        float hereZ = here.Terrain.SampleZUnchecked(local.X, local.Y);
         float terrainZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
-        if (terrainZ - pos.Z > stepUp && terrainZ - MathF.Max(pos.Z, here.Terrain.SampleZUnchecked(local.X, local.Y)) > stepUp)
+        if (options.DoorsOnly && StepsIntoStorey(there, start, pos.Z, candidate, terrainZ))
         {
-            return new ResolveResult(pos, hereCellId, true); // rejected: step too high
+            return Refuse(lbX, lbY, local, pos.Z, hereZ, hereCellId, in options); // the building's outer wall
+        }
+
+        if (terrainZ - pos.Z > stepUp && terrainZ - MathF.Max(pos.Z, hereZ) > stepUp)
+        {
+            return Refuse(lbX, lbY, local, pos.Z, hereZ, hereCellId, in options); // step too high
         }
 
         if (options.WalkableSlope && terrainZ > pos.Z && there.Terrain.NormalZUnchecked(candidate.X, candidate.Y) < PhysicsConstants.FloorZ)
         {
-            return new ResolveResult(pos, hereCellId, true); // rejected: climbing a slope too steep to walk
+            return Refuse(lbX, lbY, local, pos.Z, hereZ, hereCellId, in options); // climbing a slope too steep to walk
         }
 
         rejected = false;
@@ -290,9 +300,60 @@ public sealed class PhysicsEngine
     /// and the ground farther below the feet than the step-down height, airborne at the feet's Z.
     /// </summary>
     private static ResolveResult Land(Vector3 ground, float z, uint cellId, in MovementOptions options) =>
-        options.StepDownHeight is float down && z - ground.Z > down
+        options.StepDownHeight is float down && z - ground.Z > MathF.Max(down, PhysicsConstants.GroundTolerance)
             ? new ResolveResult(ground with { Z = z }, cellId, false)
             : new ResolveResult(ground, cellId, true);
+
+    /// <summary>
+    /// A refused move: the mover stays at <paramref name="local"/> (landblock-local, in landblock
+    /// (lbX, lbY)). Against <paramref name="ground"/> (the terrain, or its cell's floor nearest its
+    /// feet, under it; null when there is none): feet within <see cref="PhysicsConstants.GroundTolerance"/>
+    /// of it keep their Z and stand on it (the spec's "keep currentPos"); feet deeper below it (sunk), or
+    /// above it by no more than the step-down height, are put on it; feet higher keep their Z and are
+    /// airborne, so the caller's gravity acts.
+    /// </summary>
+    private ResolveResult Refuse(int lbX, int lbY, Vector2 local, float z, float? ground, uint cellId, in MovementOptions options)
+    {
+        if (ground is float g)
+        {
+            float above = z - g;
+            if (MathF.Abs(above) <= PhysicsConstants.GroundTolerance)
+            {
+                return new ResolveResult(ToWorld(lbX, lbY, local, z), cellId, true);
+            }
+
+            if (above < 0f || (options.StepDownHeight is float down && above <= down))
+            {
+                return new ResolveResult(ToWorld(lbX, lbY, local, g), cellId, true);
+            }
+        }
+
+        return new ResolveResult(ToWorld(lbX, lbY, local, z), cellId, false);
+    }
+
+    /// <summary>
+    /// Doors only: whether a move from feet at (<paramref name="p0"/>, <paramref name="z0"/>) to feet at
+    /// (<paramref name="p1"/>, <paramref name="z1"/>) (landblock-local) steps into the storey of a cell
+    /// from outside it: onto its floor outline where the floor is a storey at the feet
+    /// (<see cref="PhysicsConstants.StoreyBelow"/> below to <see cref="PhysicsConstants.StoreyAbove"/> above),
+    /// from where it was not. That is through the building's outer wall.
+    /// </summary>
+    private static bool StepsIntoStorey(LandblockEntry entry, Vector2 p0, float z0, Vector2 p1, float z1)
+    {
+        foreach (int i in entry.EntryBuckets[OutdoorCellNumber(p1) - 1])
+        {
+            CellSurface cell = entry.Cells[i];
+            if (cell.TrySampleFloor(p1.X, p1.Y, z1, out float there) && IsStorey(there - z1)
+                && !(cell.TrySampleFloor(p0.X, p0.Y, z0, out float here) && IsStorey(here - z0)))
+            {
+                return true;
+            }
+        }
+
+        return false;
+
+        static bool IsStorey(float rise) => rise >= -PhysicsConstants.StoreyBelow && rise <= PhysicsConstants.StoreyAbove;
+    }
 
     /// <summary>Doors only: whether the mover already stands over the cell's floor (within the step height), so entering it crosses no wall.</summary>
     private static bool StartsOverFloor(LandblockEntry entry, int cellIndex, Vector2 p0, float z, float stepUp) =>
@@ -318,7 +379,8 @@ public sealed class PhysicsEngine
             return false;
         }
 
-        Landing landing = FindLanding(entry, doorCell, p0, p1, z, stepUp, depth: 0, from: -1, tStart: doorT, falling: false);
+        int budget = PhysicsConstants.MaxCellVisits;
+        Landing landing = FindLanding(entry, doorCell, p0, p1, z, stepUp, depth: 0, from: -1, tStart: doorT, falling: false, ref budget);
         if (landing.Kind != Arrival.Floor || landing.Z - z > stepUp)
         {
             return false;
@@ -368,9 +430,10 @@ public sealed class PhysicsEngine
             throw new ArgumentException($"cell 0x{cellId:X8} is not registered in its landblock 0x{cellId | 0xFFFF:X8}.", "currentCellId");
         }
 
-        Vector2 p0 = new Vector2(pos.X, pos.Y) - Origin2(lbX, lbY);
-        Vector2 p1 = p0 + delta;
-        Landing landing = FindLanding(entry, cellIndex, p0, p1, pos.Z, stepUp, depth: 0, from: -1, tStart: 0f, falling: false);
+        Vector2 p0 = Representable(lbX, lbY, new Vector2(pos.X, pos.Y) - Origin2(lbX, lbY));
+        Vector2 p1 = Representable(lbX, lbY, p0 + delta);
+        int budget = PhysicsConstants.MaxCellVisits;
+        Landing landing = FindLanding(entry, cellIndex, p0, p1, pos.Z, stepUp, depth: 0, from: -1, tStart: 0f, falling: false, ref budget);
         CellSurface cell = entry.Cells[cellIndex];
         switch (landing.Kind)
         {
@@ -388,8 +451,8 @@ public sealed class PhysicsEngine
                     in options);
             default:
                 // Rejected (wall, missing cell, unloaded land, step too high), or nothing under the
-                // mover at all: it stays, on the ground only if its own cell has a floor under it.
-                return new ResolveResult(pos, cellId, cell.TrySampleFloor(p0.X, p0.Y, pos.Z, out _));
+                // mover at all: it stays, on its own cell's floor if it is at (or below) it.
+                return Refuse(lbX, lbY, p0, pos.Z, cell.TrySampleFloor(p0.X, p0.Y, pos.Z, out float floorHere) ? floorHere : null, cellId, in options);
         }
     }
 
@@ -398,8 +461,13 @@ public sealed class PhysicsEngine
     /// doorway it crosses, else on this cell's floor, else through a floor opening under p1, else
     /// (first cell only) on a portal neighbour's floor under p1.
     /// </summary>
-    private Landing FindLanding(LandblockEntry entry, int cellIndex, Vector2 p0, Vector2 p1, float z, float stepUp, int depth, int from, float tStart, bool falling)
+    private Landing FindLanding(LandblockEntry entry, int cellIndex, Vector2 p0, Vector2 p1, float z, float stepUp, int depth, int from, float tStart, bool falling, ref int budget)
     {
+        if (--budget < 0)
+        {
+            return Landing.Blocked; // the call's search has visited as many cells as any real move needs
+        }
+
         CellSurface cell = entry.Cells[cellIndex];
         ReadOnlySpan<PortalShape> shapes = cell.PortalShapes;
         int[] targets = entry.PortalTargets[cellIndex];
@@ -425,7 +493,7 @@ public sealed class PhysicsEngine
 
         if (doorway >= 0)
         {
-            Landing through = Pass(entry, cellIndex, targets[doorway], p0, p1, z, stepUp, depth, doorwayT, falling: false);
+            Landing through = Pass(entry, cellIndex, targets[doorway], p0, p1, z, stepUp, depth, doorwayT, falling: false, ref budget);
             return through.Kind == Arrival.Nothing ? Landing.Blocked : through;
         }
 
@@ -448,7 +516,7 @@ public sealed class PhysicsEngine
                 continue; // an opening overhead, or one this mover is not standing at
             }
 
-            Landing through = Pass(entry, cellIndex, targets[k], p0, p1, z, stepUp, depth, tStart, falling: true);
+            Landing through = Pass(entry, cellIndex, targets[k], p0, p1, z, stepUp, depth, tStart, falling: true, ref budget);
             if (through.Kind != Arrival.Nothing)
             {
                 return through;
@@ -482,7 +550,7 @@ public sealed class PhysicsEngine
     }
 
     /// <summary>The landing beyond a portal of cell <paramref name="cellIndex"/> leading to <paramref name="target"/>.</summary>
-    private Landing Pass(LandblockEntry entry, int cellIndex, int target, Vector2 p0, Vector2 p1, float z, float stepUp, int depth, float t, bool falling)
+    private Landing Pass(LandblockEntry entry, int cellIndex, int target, Vector2 p0, Vector2 p1, float z, float stepUp, int depth, float t, bool falling, ref int budget)
     {
         if (target == LandblockEntry.Missing || depth >= PhysicsConstants.MaxPortalHops)
         {
@@ -501,7 +569,7 @@ public sealed class PhysicsEngine
                 : Landing.OnTerrain(x, y, local, land.Terrain.SampleZUnchecked(local.X, local.Y));
         }
 
-        return FindLanding(entry, target, p0, p1, z, stepUp, depth + 1, cellIndex, t, falling);
+        return FindLanding(entry, target, p0, p1, z, stepUp, depth + 1, cellIndex, t, falling, ref budget);
     }
 
     /// <summary>
@@ -581,7 +649,7 @@ public sealed class PhysicsEngine
         {
             lbX = CellIds.LandblockX(cellId);
             lbY = CellIds.LandblockY(cellId);
-            local = new Vector2(pos.X, pos.Y) - Origin2(lbX, lbY);
+            local = Representable(lbX, lbY, new Vector2(pos.X, pos.Y) - Origin2(lbX, lbY));
             if (local.X >= -SeamSlack && local.Y >= -SeamSlack
                 && local.X <= PhysicsConstants.LandblockSize + SeamSlack && local.Y <= PhysicsConstants.LandblockSize + SeamSlack)
             {
@@ -594,6 +662,18 @@ public sealed class PhysicsEngine
         local = new Vector2(pos.X, pos.Y);
         Wrap(ref local.X, ref lbX);
         Wrap(ref local.Y, ref lbY);
+        local = Representable(lbX, lbY, local);
+    }
+
+    /// <summary>
+    /// The landblock-local point that survives the round trip to the world frame: the local value of
+    /// the world position it is returned as. Every surface is sampled here, so the returned position
+    /// is exactly where the answer was computed, and resolving it again finds the same ground.
+    /// </summary>
+    private Vector2 Representable(int lbX, int lbY, Vector2 local)
+    {
+        Vector2 origin = Origin2(lbX, lbY);
+        return (origin + local) - origin;
     }
 
     /// <summary>

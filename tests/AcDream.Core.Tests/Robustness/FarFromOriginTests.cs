@@ -6,7 +6,8 @@ namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
 /// Landblocks at the corners of the world in both world frames give the answers of the
-/// landblock-local frame: Z and cell ids bit for bit, world XY rounded once.
+/// landblock-local frame for the same move to the end point rounded to the world frame: Z and cell
+/// ids bit for bit, world XY rounded once; and resolving an answer again in place returns it.
 /// </summary>
 public class FarFromOriginTests
 {
@@ -71,7 +72,11 @@ public class FarFromOriginTests
             uint cell = indoor ? prefix | 0x0100u : prefix | (uint)random.Next(1, 0x41);
             var delta = new Vector3(Gen.Range(random, -3, 3), Gen.Range(random, -3, 3), 0);
             float z = Gen.Range(random, -5, 1500);
-            ResolveResult expected = local.Resolve(new Vector3(start, z), cell, delta, 2000f);
+            // The engine computes its answer at the end point it can return: the local end point rounded
+            // to the world frame's float spacing. The landblock-local frame gets the same move to it.
+            Vector2 end = start + new Vector2(delta.X, delta.Y);
+            Vector2 rounded = (new Vector2(offset.X, offset.Y) + end) - new Vector2(offset.X, offset.Y);
+            ResolveResult expected = local.Resolve(new Vector3(start, z), cell, new Vector3(rounded - start, 0), 2000f);
             ResolveResult actual = engine.Resolve(new Vector3(start.X + offset.X, start.Y + offset.Y, z), cell, delta, 2000f);
             string what = $"case {n}: {frame}, local start {start:R} z {z:R} in 0x{cell:X8} by {delta:R}; landblock-local answer {expected}";
 
@@ -81,6 +86,13 @@ public class FarFromOriginTests
             Vector3 neighbourOffset = engine.GetLandblockOrigin(expected.CellId) - local.GetLandblockOrigin(expected.CellId);
             actual.Position.X.Should().Be(expected.Position.X + neighbourOffset.X, $"{what}: world X is the local answer rounded once");
             actual.Position.Y.Should().Be(expected.Position.Y + neighbourOffset.Y, what);
+
+            // And resolving it again in place returns it bit for bit: the next frame stands where this one
+            // ended. (Not for a refused mover in mid-air: the literal engine snaps any accepted move to the ground.)
+            if (actual.IsOnGround)
+            {
+                engine.Resolve(actual.Position, actual.CellId, Vector3.Zero, 2000f).Should().Be(actual, $"{what}: fixed point");
+            }
         }
     }
 
