@@ -16,7 +16,8 @@ namespace AcDream.App;
 /// <remarks>
 /// The streaming window is the square of landblocks within <see cref="StreamingRadius"/> of the
 /// observer's landblock (3 × 3), clipped to the world. The engine is touched only by the frame
-/// thread; the loader thread only reads from the source. A cell that cannot be built is skipped with
+/// thread; the loader thread only reads from the source. The two share only the request and result
+/// queues, under a lock that no callback runs inside. A cell that cannot be built is skipped with
 /// a warning; a landblock that cannot be built at all is not registered (the engine never holds half
 /// of one), is reported, and is requested again <see cref="RetryDelayFrames"/> frames later.
 /// </remarks>
@@ -92,26 +93,31 @@ public sealed class GameWindow : IDisposable
     public IReadOnlyCollection<uint> WindowLandblocks => _window;
 
     /// <summary>
-    /// The landblock (<c>0xXXYYFFFF</c>) under a world position; positions off the world clamp to its edge.
+    /// The landblock (<c>0xXXYYFFFF</c>) under a world position; positions off the world (however far,
+    /// infinities included) clamp to the nearest edge landblock.
     /// </summary>
     /// <param name="worldPosition">World metres (Z is ignored).</param>
-    public uint LandblockAt(Vector3 worldPosition)
-    {
-        int x = Math.Clamp(_originX + (int)MathF.Floor(worldPosition.X / PhysicsConstants.LandblockSize), 0, PhysicsConstants.MaxLandblockIndex);
-        int y = Math.Clamp(_originY + (int)MathF.Floor(worldPosition.Y / PhysicsConstants.LandblockSize), 0, PhysicsConstants.MaxLandblockIndex);
-        return ((uint)x << 24) | ((uint)y << 16) | 0xFFFF;
-    }
+    /// <exception cref="ArgumentException">X or Y is NaN.</exception>
+    public uint LandblockAt(Vector3 worldPosition) =>
+        ((uint)LandblockIndex(_originX, worldPosition.X) << 24) | ((uint)LandblockIndex(_originY, worldPosition.Y) << 16) | 0xFFFF;
 
     /// <summary>
     /// The frame loop's streaming step: moves the window to the observer, registers the loads that
-    /// finished (those still in the window), unloads landblocks outside the window, and requests the
-    /// missing ones (nearest first) from the loader thread. Never blocks on a load.
+    /// finished (those still in the window), unloads landblocks outside the window, drops the queued
+    /// requests that left it, and requests the missing ones; the loader takes the queue nearest first
+    /// (by distance to the observer's landblock). Never blocks on a load.
     /// </summary>
+    /// <remarks>
+    /// <see cref="LandblockLoaded"/>, <see cref="LandblockUnloaded"/> and the log run on this thread
+    /// with the streaming lock released, so they may call <see cref="Dispose"/>. After
+    /// <see cref="Dispose"/> this still registers what finished and unloads, but requests nothing.
+    /// </remarks>
     /// <param name="observerWorldPosition">The observer (the player), world metres.</param>
+    /// <exception cref="ArgumentException">The observer's X or Y is NaN.</exception>
     public void UpdateStreaming(Vector3 observerWorldPosition)
     {
-        _frame++;
         uint center = LandblockAt(observerWorldPosition);
+        _frame++;
         int cx = (int)(center >> 24), cy = (int)((center >> 16) & 0xFF);
         _window.Clear();
         for (int dx = -StreamingRadius; dx <= StreamingRadius; dx++)
@@ -126,36 +132,66 @@ public sealed class GameWindow : IDisposable
             }
         }
 
+        // Only the hand-over queues need the lock; the engine and the callbacks run without it.
+        List<(uint Id, LoadedLandblock? Loaded, string? Error)> finished;
         lock (_streamingLock)
         {
-            while (_completed.Count > 0)
+            finished = [.. _completed];
+            _completed.Clear();
+            foreach ((uint id, _, _) in finished)
             {
-                (uint id, LoadedLandblock? loaded, string? error) = _completed.Dequeue();
                 _pending.Remove(id);
-                if (!_window.Contains(id))
-                {
-                    continue; // the observer moved on while it loaded
-                }
-
-                if (loaded is null || !ApplyLoadedTerrainLocked(id, loaded, out error))
-                {
-                    _log($"landblock 0x{id:X8}: could not load ({error}); retrying in {RetryDelayFrames} frames.");
-                    _retryAtFrame[id] = _frame + RetryDelayFrames;
-                }
             }
+        }
 
-            foreach (uint id in _loaded.Where(id => !_window.Contains(id)).ToList())
+        foreach ((uint id, LoadedLandblock? loaded, string? loadError) in finished)
+        {
+            if (!_window.Contains(id))
             {
-                UnloadLandblockLocked(id);
+                continue; // the observer moved on while it loaded
             }
 
-            foreach (uint id in _retryAtFrame.Keys.Where(id => !_window.Contains(id)).ToList())
+            string? error = loadError;
+            if (loaded is null || !ApplyLoadedTerrain(id, loaded, out error))
             {
-                _retryAtFrame.Remove(id);
+                _retryAtFrame[id] = _frame + RetryDelayFrames;
+                _log($"landblock 0x{id:X8}: could not load ({error}); retrying in {RetryDelayFrames} frames.");
+            }
+        }
+
+        foreach (uint id in _loaded.Where(id => !_window.Contains(id)).ToList())
+        {
+            UnloadLandblock(id);
+        }
+
+        foreach (uint id in _retryAtFrame.Keys.Where(id => !_window.Contains(id)).ToList())
+        {
+            _retryAtFrame.Remove(id);
+        }
+
+        lock (_streamingLock)
+        {
+            if (_stopping)
+            {
+                return;
             }
 
-            bool requested = false;
-            foreach (uint id in _window.OrderBy(id => Chebyshev(id, cx, cy)).ThenBy(id => id))
+            // Requests that left the window before the loader took them are dropped; the rest and the
+            // new ones are queued nearest first.
+            var queue = new List<uint>(_requests.Count + _window.Count);
+            foreach (uint id in _requests)
+            {
+                if (_window.Contains(id))
+                {
+                    queue.Add(id);
+                }
+                else
+                {
+                    _pending.Remove(id);
+                }
+            }
+
+            foreach (uint id in _window)
             {
                 if (_loaded.Contains(id) || _pending.Contains(id)
                     || (_retryAtFrame.TryGetValue(id, out long retryAt) && _frame < retryAt))
@@ -165,14 +201,16 @@ public sealed class GameWindow : IDisposable
 
                 _retryAtFrame.Remove(id);
                 _pending.Add(id);
-                _requests.Enqueue(id);
-                requested = true;
+                queue.Add(id);
             }
 
-            if (requested)
+            _requests.Clear();
+            foreach (uint id in queue.OrderBy(id => DistanceSquared(id, cx, cy)).ThenBy(id => id))
             {
-                Monitor.PulseAll(_streamingLock);
+                _requests.Enqueue(id);
             }
+
+            Monitor.PulseAll(_streamingLock);
         }
     }
 
@@ -200,16 +238,30 @@ public sealed class GameWindow : IDisposable
         }
     }
 
-    /// <summary>Stops the loader thread (a load in progress finishes first).</summary>
+    /// <summary>
+    /// Stops the loader thread: a load in progress finishes first, queued requests are dropped.
+    /// Safe to call more than once, from a <see cref="LandblockLoaded"/> or
+    /// <see cref="LandblockUnloaded"/> handler or the log (they run outside the streaming lock), and
+    /// from the source on the loader thread (it then does not wait for the loader to end).
+    /// </summary>
     public void Dispose()
     {
         lock (_streamingLock)
         {
             _stopping = true;
+            foreach (uint id in _requests)
+            {
+                _pending.Remove(id);
+            }
+
+            _requests.Clear();
             Monitor.PulseAll(_streamingLock);
         }
 
-        _loader.Join();
+        if (Thread.CurrentThread != _loader)
+        {
+            _loader.Join();
+        }
     }
 
     /// <summary>
@@ -219,7 +271,7 @@ public sealed class GameWindow : IDisposable
     /// built is skipped with a warning naming it and the reason.
     /// </summary>
     /// <returns>False, with the reason, when the landblock itself cannot be registered; the engine is then unchanged.</returns>
-    internal bool ApplyLoadedTerrainLocked(uint landblockId, LoadedLandblock loaded, out string? error)
+    internal bool ApplyLoadedTerrain(uint landblockId, LoadedLandblock loaded, out string? error)
     {
         uint id = (landblockId & 0xFFFF0000u) | 0xFFFF;
         error = null;
@@ -275,7 +327,7 @@ public sealed class GameWindow : IDisposable
     }
 
     /// <summary>The unload path: removes a landblock from the engine (nothing happens if it is not registered).</summary>
-    internal void UnloadLandblockLocked(uint landblockId)
+    internal void UnloadLandblock(uint landblockId)
     {
         uint id = (landblockId & 0xFFFF0000u) | 0xFFFF;
         Physics.RemoveLandblock(id);
@@ -325,8 +377,23 @@ public sealed class GameWindow : IDisposable
         }
     }
 
-    private static int Chebyshev(uint id, int cx, int cy) =>
-        Math.Max(Math.Abs((int)(id >> 24) - cx), Math.Abs((int)((id >> 16) & 0xFF) - cy));
+    /// <summary>The landblock index along one axis, in double and clamped to the world before it becomes an int (a float's floor(x / 192) overflows an int).</summary>
+    private static int LandblockIndex(int origin, float coordinate)
+    {
+        if (float.IsNaN(coordinate))
+        {
+            throw new ArgumentException("the world position has a NaN coordinate; it is in no landblock.", "worldPosition");
+        }
+
+        double index = origin + Math.Floor(coordinate / (double)PhysicsConstants.LandblockSize);
+        return (int)Math.Clamp(index, 0, PhysicsConstants.MaxLandblockIndex);
+    }
+
+    private static int DistanceSquared(uint id, int cx, int cy)
+    {
+        int dx = (int)(id >> 24) - cx, dy = (int)((id >> 16) & 0xFF) - cy;
+        return (dx * dx) + (dy * dy);
+    }
 
     private void LoaderLoop()
     {

@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Text;
 using System.Xml;
+using System.Xml.Linq;
 using AcDream.App.Scenes;
 using AcDream.App.World;
 
@@ -9,6 +10,8 @@ namespace AcDream.App;
 /// <summary>
 /// The main job: runs a scene (the embedded Holtburg walk by default), prints the summary and writes
 /// the SVG. Exit status 0 on success, 2 on a bad option or scene file, 1 when the SVG cannot be written.
+/// The SVG is written to a temporary file and renamed over the old one, so a failure never leaves a
+/// damaged SVG.
 /// </summary>
 internal static class MainJob
 {
@@ -97,11 +100,15 @@ internal static class MainJob
         WalkRecord record = SceneRunner.Run(scene, world, frames);
 
         string svgPath = Path.GetFullPath(Path.Combine(outDir ?? "out", FileName(scene.Name) + ".svg"));
+        XDocument svg = WalkSvg.Build(record, world);
         try
         {
             Directory.CreateDirectory(Path.GetDirectoryName(svgPath)!);
-            using var writer = XmlWriter.Create(svgPath, new XmlWriterSettings { Encoding = new UTF8Encoding(false), Indent = true });
-            WalkSvg.Build(record, world).Save(writer);
+            WriteAtomically(svgPath, stream =>
+            {
+                using var writer = XmlWriter.Create(stream, new XmlWriterSettings { Encoding = new UTF8Encoding(false), Indent = true });
+                svg.Save(writer);
+            });
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
@@ -111,6 +118,29 @@ internal static class MainJob
 
         output.Write(quiet ? $"SVG: {svgPath}{System.Environment.NewLine}" : WalkReport.Format(record, svgPath));
         return 0;
+    }
+
+    /// <summary>
+    /// Writes a file through a temporary file in the same folder, renamed over <paramref name="path"/>
+    /// only once it is complete: a failure leaves an earlier file of that name as it was, and removes
+    /// the temporary file.
+    /// </summary>
+    internal static void WriteAtomically(string path, Action<Stream> write)
+    {
+        string temporary = Path.Combine(Path.GetDirectoryName(Path.GetFullPath(path))!, $".{Path.GetFileName(path)}.{Guid.NewGuid():N}.tmp");
+        try
+        {
+            using (var stream = new FileStream(temporary, FileMode.CreateNew, FileAccess.Write))
+            {
+                write(stream);
+            }
+
+            File.Move(temporary, path, overwrite: true);
+        }
+        finally
+        {
+            File.Delete(temporary); // nothing to delete once moved
+        }
     }
 
     private static int Fail(TextWriter error, string message)

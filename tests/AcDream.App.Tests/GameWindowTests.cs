@@ -18,12 +18,12 @@ public class GameWindowTests
     private static readonly Vector3 IntoDoor = new(1f, 0f, 0f);
 
     [Fact]
-    public void ApplyLoadedTerrainLocked_HoltburgLandblock_RegistersTerrainAndCells()
+    public void ApplyLoadedTerrain_HoltburgLandblock_RegistersTerrainAndCells()
     {
         var world = new HoltburgWorld();
         using var window = new GameWindow(world, world.HeightTable, Holtburg);
 
-        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out string? error).Should().BeTrue($"error: {error}");
+        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out string? error).Should().BeTrue($"error: {error}");
 
         window.Physics.ContainsLandblock(Holtburg).Should().BeTrue();
         ResolveResult door = window.Physics.Resolve(OutsideDoor, 0xA9B40001u, IntoDoor, 0.5f);
@@ -43,13 +43,13 @@ public class GameWindowTests
     }
 
     [Fact]
-    public void UnloadLandblockLocked_AfterApply_ResolveNoLongerFindsTerrainOrCells()
+    public void UnloadLandblock_AfterApply_ResolveNoLongerFindsTerrainOrCells()
     {
         var world = new HoltburgWorld();
         using var window = new GameWindow(world, world.HeightTable, Holtburg);
-        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
 
-        window.UnloadLandblockLocked(Holtburg);
+        window.UnloadLandblock(Holtburg);
 
         window.Physics.ContainsLandblock(Holtburg).Should().BeFalse();
         window.Physics.LandblockCount.Should().Be(0);
@@ -61,7 +61,7 @@ public class GameWindowTests
     }
 
     [Fact]
-    public void ApplyLoadedTerrainLocked_Reload_GivesTheSameAnswersAsTheFirstLoad()
+    public void ApplyLoadedTerrain_Reload_GivesTheSameAnswersAsTheFirstLoad()
     {
         var world = new HoltburgWorld();
         using var window = new GameWindow(world, world.HeightTable, Holtburg);
@@ -70,10 +70,10 @@ public class GameWindowTests
             .Select(_ => (Pos: new Vector3(120f + (random.NextSingle() * 50f), random.NextSingle() * 25f, 94f), Delta: new Vector3((random.NextSingle() - 0.5f) * 2f, (random.NextSingle() - 0.5f) * 2f, 0f)))
             .ToList();
 
-        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
         var first = queries.Select(q => window.Physics.Resolve(q.Pos, 0xA9B40001u, q.Delta, 0.5f)).ToList();
-        window.UnloadLandblockLocked(Holtburg);
-        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.UnloadLandblock(Holtburg);
+        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
         var second = queries.Select(q => window.Physics.Resolve(q.Pos, 0xA9B40001u, q.Delta, 0.5f)).ToList();
 
         second.Should().Equal(first, "a reloaded landblock resolves exactly as the first load did");
@@ -81,7 +81,7 @@ public class GameWindowTests
     }
 
     [Fact]
-    public void ApplyLoadedTerrainLocked_CellWithMissingEnvironmentOrBadGeometry_SkipsOnlyThatCellWithWarning()
+    public void ApplyLoadedTerrain_CellWithMissingEnvironmentOrBadGeometry_SkipsOnlyThatCellWithWarning()
     {
         var world = new HoltburgWorld();
         var warnings = new List<string>();
@@ -95,7 +95,7 @@ public class GameWindowTests
         environments.Add(0x0D000180u, new Environment { Id = 0x0D000180u, Cells = { [0] = broken } });
         var cells = real.EnvCells.Append(new EnvCell { Id = 0xA9B40180u, EnvironmentId = 0x0180, Position = new Frame() }).ToList();
 
-        window.ApplyLoadedTerrainLocked(Holtburg, new LoadedLandblock(real.LandBlock, cells, environments), out string? error).Should().BeTrue($"error: {error}");
+        window.ApplyLoadedTerrain(Holtburg, new LoadedLandblock(real.LandBlock, cells, environments), out string? error).Should().BeTrue($"error: {error}");
 
         warnings.Should().HaveCount(2, string.Join(" | ", warnings));
         warnings.Should().Contain(w => w.Contains("0xA9B40145") && w.Contains("environment 0x0D000145 is missing"), string.Join(" | ", warnings));
@@ -107,14 +107,14 @@ public class GameWindowTests
     }
 
     [Fact]
-    public void ApplyLoadedTerrainLocked_BadHeights_RegistersNothingAndSaysWhy()
+    public void ApplyLoadedTerrain_BadHeights_RegistersNothingAndSaysWhy()
     {
         var world = new HoltburgWorld();
         using var window = new GameWindow(world, world.HeightTable, Holtburg);
         LoadedLandblock real = world.Load(Holtburg);
         var bad = new LoadedLandblock(new LandBlock { Id = Holtburg, Height = new byte[80] }, real.EnvCells, real.Environments);
 
-        window.ApplyLoadedTerrainLocked(Holtburg, bad, out string? error).Should().BeFalse();
+        window.ApplyLoadedTerrain(Holtburg, bad, out string? error).Should().BeFalse();
 
         error.Should().Contain("81").And.Contain("80");
         window.Physics.LandblockCount.Should().Be(0, "never half a landblock");
@@ -162,13 +162,13 @@ public class GameWindowTests
     {
         var world = new HoltburgWorld();
         using var window = new GameWindow(world, world.HeightTable, Holtburg);
-        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
         var mode = new PlayerMovementMode(window.Physics, new Vector3(x, y, z), cellId, 0f);
         mode.Update(default, 1f / 30f);
         Vector3 standing = mode.Position;
         uint cell = mode.CellId;
 
-        window.UnloadLandblockLocked(Holtburg);
+        window.UnloadLandblock(Holtburg);
         var walk = new MovementIntent(1f, 0f, 0f, false);
         for (int i = 0; i < 30; i++)
         {
@@ -177,7 +177,7 @@ public class GameWindowTests
             mode.IsOnGround.Should().BeTrue($"frame {i}: held, not falling");
         }
 
-        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
         mode.Update(default, 1f / 30f);
         mode.Position.Should().Be(standing, "after the reload the mover stands where it stood");
         mode.CellId.Should().Be(cell);
@@ -227,5 +227,125 @@ public class GameWindowTests
         engine.LandblockCount.Should().Be(9);
         window.WindowLandblocks.Should().OnlyContain(id => engine.ContainsLandblock(id));
         registered.Should().BeEquivalentTo(window.LoadedLandblocks);
+    }
+
+    [Theory]
+    [InlineData(1e12f, 0f, 0xFEB4FFFFu)]
+    [InlineData(-1e12f, 0f, 0x00B4FFFFu)]
+    [InlineData(float.MaxValue, 0f, 0xFEB4FFFFu)]
+    [InlineData(-float.MaxValue, 0f, 0x00B4FFFFu)]
+    [InlineData(0f, 1e12f, 0xA9FEFFFFu)]
+    [InlineData(0f, -1e12f, 0xA900FFFFu)]
+    [InlineData(float.MaxValue, -float.MaxValue, 0xFE00FFFFu)]
+    [InlineData(float.NegativeInfinity, float.PositiveInfinity, 0x00FEFFFFu)]
+    [InlineData(16511.99f, 191.99f, 0xFEB4FFFFu)] // the east edge's last centimetre: (0xFE - 0xA9) × 192 + 191.99
+    [InlineData(16512f, 0f, 0xFEB4FFFFu)] // one landblock past it
+    [InlineData(-32448f, -34560f, 0x0000FFFFu)] // 0x00's west edge; 0x00's south edge
+    [InlineData(-32448.02f, -34560.02f, 0x0000FFFFu)] // just past them
+    [InlineData(-0.001f, 192f, 0xA8B5FFFFu)]
+    public void LandblockAt_PositionsFarOffTheWorld_ClampToTheNearestEdge(float x, float y, uint expected)
+    {
+        using var window = new GameWindow(new FlatSource(), TestWorlds.LinearTable(), Holtburg);
+
+        uint landblock = window.LandblockAt(new Vector3(x, y, 0f));
+
+        landblock.Should().Be(expected, $"({x}, {y}) is in landblock 0x{expected:X8} or off the world beyond it; got 0x{landblock:X8}");
+    }
+
+    [Fact]
+    public void LandblockAt_NaN_Throws()
+    {
+        using var window = new GameWindow(new FlatSource(), TestWorlds.LinearTable(), Holtburg);
+
+        FluentActions.Invoking(() => window.LandblockAt(new Vector3(float.NaN, 0f, 0f))).Should().Throw<ArgumentException>().WithMessage("*NaN*");
+    }
+
+    [Fact]
+    public void UpdateStreaming_TeleportEveryFrameWithSlowLoads_DropsStaleRequestsAndLoadsTheNearestFirst()
+    {
+        var source = new FlatSource { DelayMilliseconds = 10 };
+        using var window = new GameWindow(source, TestWorlds.LinearTable(), Holtburg);
+        static Vector3 Teleport(int frame) => new((((frame * 3) - 60) * 192f) + 96f, 96f, 0f); // 3 landblocks a frame: windows never overlap
+
+        for (int frame = 0; frame < 40; frame++)
+        {
+            window.UpdateStreaming(Teleport(frame));
+        }
+
+        Vector3 destination = Teleport(40);
+        int frames = 0;
+        do
+        {
+            window.UpdateStreaming(destination);
+            window.WaitForLoads(Patience).Should().BeTrue();
+            frames++;
+        }
+        while (frames < 100 && !window.LoadedLandblocks.ToHashSet().SetEquals(window.WindowLandblocks));
+
+        IReadOnlyList<uint> loads = source.Loads();
+        uint centre = window.LandblockAt(destination);
+        window.LoadedLandblocks.Should().HaveCount(9).And.BeEquivalentTo(window.WindowLandblocks, "the destination window is complete");
+        loads.Count.Should().BeLessThanOrEqualTo(9 + 10, $"9 destination loads plus the few stale ones in flight, not one per stale request; {loads.Count} loads: {string.Join(" ", loads.Select(id => $"{id >> 16:X4}"))}");
+        List<uint> atDestination = loads.Where(window.WindowLandblocks.Contains).ToList();
+        atDestination.Should().OnlyHaveUniqueItems().And.HaveCount(9, $"each destination landblock loads once: {string.Join(" ", atDestination.Select(id => $"{id >> 16:X4}"))}");
+        atDestination[0].Should().Be(centre, $"the observer's own landblock 0x{centre:X8} comes first; order {string.Join(" ", atDestination.Select(id => $"{id >> 16:X4}"))}");
+        atDestination.Skip(1).Take(4).Select(id => Math.Abs((int)(id >> 24) - (int)(centre >> 24)) + Math.Abs((int)((id >> 16) & 0xFF) - (int)((centre >> 16) & 0xFF)))
+            .Should().AllBeEquivalentTo(1, $"then its four edge neighbours, then the corners; order {string.Join(" ", atDestination.Select(id => $"{id >> 16:X4}"))}");
+    }
+
+    [Theory]
+    [InlineData("LandblockLoaded", 9)] // disposed while registering the 9 loads: the rest still register
+    [InlineData("LandblockUnloaded", 0)] // disposed while unloading Holtburg's window: nothing requested after
+    [InlineData("log", 8)] // 0xAEB4 failed, the other 8 register
+    [InlineData("source", 1)] // disposed while loading 0xAEB4 (nearest first): it finishes, the 8 queued are dropped
+    public async Task Dispose_FromAHandlerTheLogOrTheSource_ReturnsAndTheWindowStaysUsable(string from, int registered)
+    {
+        GameWindow? window = null;
+        int calls = 0; // callbacks that reached DisposeOnce; the first one disposes
+        void DisposeOnce()
+        {
+            if (Interlocked.Increment(ref calls) == 1)
+            {
+                window!.Dispose();
+            }
+        }
+
+        var observer = new Vector3(96f, 96f, 0f);
+        var elsewhere = new Vector3(96f + (5 * 192f), 96f, 0f);
+        var source = new FlatSource(id => from == "log" && id == 0xAEB4FFFFu) // the first load of 0xAEB4 fails: a log line
+        {
+            OnLoad = id => { if (from == "source" && id == 0xAEB4FFFFu) { DisposeOnce(); } },
+        };
+        window = new GameWindow(source, TestWorlds.LinearTable(), Holtburg, _ => { if (from == "log") { DisposeOnce(); } });
+        window.LandblockLoaded += id => { if (from == "LandblockLoaded" && id == 0xAEB4FFFFu) { DisposeOnce(); } };
+        window.LandblockUnloaded += _ => { if (from == "LandblockUnloaded") { DisposeOnce(); } };
+        window.UpdateStreaming(observer);
+        window.WaitForLoads(Patience).Should().BeTrue();
+        window.UpdateStreaming(observer);
+        window.LoadedLandblocks.Should().HaveCount(9);
+
+        // On a worker thread with a time limit: a deadlock fails here instead of hanging the suite.
+        Task frames = Task.Factory.StartNew(
+            () =>
+            {
+                window.UpdateStreaming(elsewhere);
+                window.WaitForLoads(Patience);
+                window.UpdateStreaming(elsewhere);
+                window.UpdateStreaming(elsewhere);
+                window.WaitForLoads(Patience).Should().BeTrue("nothing is left in flight after Dispose");
+            },
+            TaskCreationOptions.LongRunning);
+        (await Task.WhenAny(frames, Task.Delay(TimeSpan.FromSeconds(10)))).Should().BeSameAs(frames, $"Dispose from the {from} callback must not deadlock the frame; still running after 10 s");
+        await frames;
+
+        calls.Should().BePositive($"the {from} callback ran and disposed the window");
+        window.Physics.LandblockCount.Should().Be(window.LoadedLandblocks.Count, "the engine holds what the window loaded");
+        window.LoadedLandblocks.Should().HaveCount(registered, $"loaded: {string.Join(" ", window.LoadedLandblocks.Select(id => $"{id >> 16:X4}"))}");
+        window.LoadedLandblocks.Except(window.WindowLandblocks).Should().BeEmpty("the frame still unloaded what it left behind");
+        int loads = source.Loads().Count;
+        window.UpdateStreaming(observer);
+        Thread.Sleep(50);
+        source.Loads().Count.Should().Be(loads, "a disposed window requests nothing more");
+        window.Dispose(); // a second Dispose is harmless
     }
 }

@@ -132,6 +132,109 @@ public sealed class MainJobTests : IDisposable
     }
 
     [Fact]
+    public void Run_SceneRunningEastToTheEdgeOfTheWorld_WritesItsSvgOverTheEarlierOne()
+    {
+        // Seven 600 s runs east from the easternmost start allowed: the mover reaches the world's east
+        // edge (0xFE, x = 16,512 m) and the map, padded 15 m, reaches past it.
+        string legs = string.Join(", ", Enumerable.Range(1, 7).Select(i => $$"""{ "name": "east {{i}}", "forward": 1, "run": true, "seconds": 600 }"""));
+        string file = Path.Combine(_folder, "east.json");
+        File.WriteAllText(file, $$"""{ "name": "east edge", "start": { "position": [480, 96], "heading": 90 }, "legs": [ {{legs}} ] }""");
+        string svg = Path.Combine(_folder, "east-edge.svg");
+        File.WriteAllText(svg, "<svg>an earlier result</svg>");
+        var output = new StringWriter();
+        var error = new StringWriter();
+
+        int status = MainJob.Run(["--scene", file, "--out", _folder], output, error);
+
+        status.Should().Be(0, $"a valid scene runs; error: {error}");
+        output.ToString().Should().MatchRegex(@"Final: \(165\d\d\.\d\d, 96\.\d\d, [-\d.]+\) m in 0xFEB4", $"the walk ends at the east edge:\n{output}");
+        XDocument document = XDocument.Load(svg);
+        XNamespace ns = "http://www.w3.org/2000/svg";
+        document.Descendants(ns + "g").Select(g => (string?)g.Attribute("id")).Should().Contain(["map", "contours"]);
+        document.Descendants(ns + "path").Should().NotBeEmpty("terrain contours up to the edge");
+        Directory.GetFiles(_folder).Select(Path.GetFileName).Should().BeEquivalentTo(["east.json", "east-edge.svg"], "no temporary file is left behind");
+    }
+
+    [Fact]
+    public void WriteAtomically_WriterFails_LeavesTheEarlierFileAndNoTemporaryFile()
+    {
+        string path = Path.Combine(_folder, "walk.svg");
+        File.WriteAllText(path, "earlier");
+
+        FluentActions.Invoking(() => MainJob.WriteAtomically(path, stream =>
+        {
+            stream.Write("half a new fi"u8);
+            throw new InvalidOperationException("the writer failed");
+        })).Should().Throw<InvalidOperationException>();
+
+        File.ReadAllText(path).Should().Be("earlier", "a failed write does not touch the earlier result");
+        Directory.GetFiles(_folder).Select(Path.GetFileName).Should().Equal(["walk.svg"], "the temporary file is removed");
+        MainJob.WriteAtomically(path, stream => stream.Write("new"u8));
+        File.ReadAllText(path).Should().Be("new", "a write that succeeds replaces the file");
+        Directory.GetFiles(_folder).Select(Path.GetFileName).Should().Equal(["walk.svg"]);
+    }
+
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)]
+    public void Run_SceneFileLargerThanOneMebibyte_ExitsTwoNamingTheFileAndTheLimit(bool devZero)
+    {
+        string file = devZero ? "/dev/zero" : Path.Combine(_folder, "big.json");
+        if (!devZero)
+        {
+            // A valid scene of 2 MiB (a long note): only its size is wrong.
+            string note = new('a', 2 * 1024 * 1024);
+            File.WriteAllText(file, $$"""{ "name": "big", "start": { "position": [10, 10] }, "legs": [ { "name": "a", "to": [11, 10] } ], "notes": ["{{note}}"] }""");
+        }
+        else if (!File.Exists(file))
+        {
+            return; // no /dev/zero on this system
+        }
+
+        var error = new StringWriter();
+
+        int status = MainJob.Run(["--scene", file, "--out", _folder], new StringWriter(), error);
+
+        status.Should().Be(2, error.ToString());
+        string[] lines = error.ToString().Split(System.Environment.NewLine, StringSplitOptions.RemoveEmptyEntries);
+        lines.Should().ContainSingle($"one line: {error}");
+        lines[0].Should().Contain(file).And.Contain("1 MiB", lines[0]);
+        File.Exists(Path.Combine(_folder, "big.svg")).Should().BeFalse("nothing runs");
+    }
+
+    [Fact]
+    public void Run_SceneFileOfExactlyOneMebibyte_IsRead()
+    {
+        string file = Path.Combine(_folder, "full.json");
+        string scene = """{ "name": "full", "start": { "position": [10, 10] }, "legs": [ { "name": "a", "to": [11, 10] } ] }""";
+        File.WriteAllText(file, scene + new string(' ', SceneReader.MaxFileBytes - scene.Length));
+        new FileInfo(file).Length.Should().Be(SceneReader.MaxFileBytes);
+
+        int status = MainJob.Run(["--scene", file, "--out", _folder, "--quiet"], new StringWriter(), new StringWriter());
+
+        status.Should().Be(0, "the limit itself is allowed");
+        File.Exists(Path.Combine(_folder, "full.svg")).Should().BeTrue();
+    }
+
+    [Theory]
+    [InlineData("""{"name": "x", "name": "y", "start": {"position": [0, 0]}, "legs": [{"name": "a", "to": [1, 2]}]}""", "name", "\"y\"")]
+    [InlineData("""{"name": "x", "start": {"position": [0, 0], "heading": 10, "heading": 20}, "legs": [{"name": "a", "to": [1, 2]}]}""", "start.heading", "20")]
+    [InlineData("""{"name": "x", "start": {"position": [0, 0]}, "legs": [{"name": "a", "to": [1, 2], "to": [3, 4]}]}""", "legs[0].to", "[3, 4]")]
+    [InlineData("""{"name": "x", "start": {"position": [0, 0]}, "effects": {"doorsOnly": true, "doorsOnly": false}, "legs": [{"name": "a", "to": [1, 2]}]}""", "effects.doorsOnly", "false")]
+    public void Run_DuplicateKeyInSceneFile_ExitsTwoNamingTheKey(string json, string field, string value)
+    {
+        string file = Path.Combine(_folder, "twice.json");
+        File.WriteAllText(file, json);
+        var error = new StringWriter();
+
+        int status = MainJob.Run(["--scene", file, "--out", _folder], new StringWriter(), error);
+
+        status.Should().Be(2, error.ToString());
+        error.ToString().Should().Contain(file).And.Contain($"field {field}:").And.Contain("twice").And.Contain(value);
+        File.Exists(Path.Combine(_folder, "x.svg")).Should().BeFalse("nothing runs on a bad scene");
+    }
+
+    [Fact]
     public void Run_SceneFileNotJson_ExitsTwoWithTheLine()
     {
         string file = Path.Combine(_folder, "broken.json");

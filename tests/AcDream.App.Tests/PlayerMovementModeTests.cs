@@ -214,6 +214,27 @@ public class PlayerMovementModeTests
     }
 
     [Theory]
+    [InlineData(1e9f)]
+    [InlineData(float.MaxValue)]
+    public async Task Update_HugeFrameTime_ClampedToMaxFrameSecondsAndReturnsPromptly(float seconds)
+    {
+        var mode = new PlayerMovementMode(Flat(50), new Vector3(96f, 96f, 50f), 0xA9B40001u, 0f);
+        var capped = new PlayerMovementMode(Flat(50), new Vector3(96f, 96f, 50f), 0xA9B40001u, 0f);
+        var walk = new MovementIntent(1f, 0f, 0f, false);
+
+        // On a worker thread with a time limit: a regression fails here instead of hanging the suite.
+        Task<MovementFrame> update = Task.Factory.StartNew(() => mode.Update(walk, seconds), TaskCreationOptions.LongRunning);
+        (await Task.WhenAny(update, Task.Delay(TimeSpan.FromSeconds(10)))).Should().BeSameAs(update, $"Update(walk, {seconds}) must return; still running after 10 s");
+
+        MovementFrame frame = await update;
+        MovementFrame reference = capped.Update(walk, PlayerMovementMode.MaxFrameSeconds);
+        frame.Steps.Should().Be(10, $"a {seconds} s frame is clamped to {PlayerMovementMode.MaxFrameSeconds} s, 10 steps of 0.1 s");
+        frame.Should().Be(reference, "the clamped frame is exactly a MaxFrameSeconds frame");
+        mode.Position.Should().Be(capped.Position, $"moved as far as in {PlayerMovementMode.MaxFrameSeconds} s");
+        mode.Position.Y.Should().BeApproximately(96f + (PlayerMovementMode.WalkSpeed * PlayerMovementMode.MaxFrameSeconds), 1e-3f, $"at {mode.Position}");
+    }
+
+    [Theory]
     [InlineData(-0.1f)]
     [InlineData(float.NaN)]
     [InlineData(float.PositiveInfinity)]

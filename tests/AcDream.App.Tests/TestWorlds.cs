@@ -49,17 +49,33 @@ internal static class TestWorlds
     }
 }
 
-/// <summary>Flat land everywhere (index 10), no cells; can fail the first load of chosen landblocks and counts calls.</summary>
+/// <summary>Flat land everywhere (index 10), no cells; can fail the first load of chosen landblocks, can be slow, and records its calls in order.</summary>
 internal sealed class FlatSource : ILandblockSource
 {
     private readonly Func<uint, bool> _failFirst;
     private readonly Random _random = new(7);
     private readonly Dictionary<uint, int> _calls = [];
+    private readonly List<uint> _order = [];
     private readonly object _gate = new();
 
     public FlatSource(Func<uint, bool>? failFirst = null) => _failFirst = failFirst ?? (_ => false);
 
     public bool Jitter { get; init; }
+
+    /// <summary>Called at the start of each load, on the loader thread.</summary>
+    public Action<uint>? OnLoad { get; init; }
+
+    /// <summary>Each load sleeps this long first.</summary>
+    public int DelayMilliseconds { get; init; }
+
+    /// <summary>Every landblock loaded so far, in the order the loads started.</summary>
+    public IReadOnlyList<uint> Loads()
+    {
+        lock (_gate)
+        {
+            return [.. _order];
+        }
+    }
 
     public int Calls(uint landblockId)
     {
@@ -75,6 +91,13 @@ internal sealed class FlatSource : ILandblockSource
         lock (_gate)
         {
             call = _calls[landblockId] = _calls.GetValueOrDefault(landblockId) + 1;
+            _order.Add(landblockId);
+        }
+
+        OnLoad?.Invoke(landblockId);
+        if (DelayMilliseconds > 0)
+        {
+            Thread.Sleep(DelayMilliseconds);
         }
 
         if (Jitter)

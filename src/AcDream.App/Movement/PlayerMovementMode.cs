@@ -12,7 +12,8 @@ namespace AcDream.App.Movement;
 /// <remarks>
 /// Positions are world metres in the engine's frame. Heading is a compass angle in radians: 0 faces
 /// north (+Y), π/2 east (+X). A frame longer than <see cref="MaxStepSeconds"/> is split into equal
-/// steps no longer than that, so a slow frame does not make one long move through walls or up slopes.
+/// steps no longer than that, so a slow frame does not make one long move through walls or up slopes;
+/// a frame longer than <see cref="MaxFrameSeconds"/> is clamped to it.
 /// With the literal engine (no <see cref="Effects"/>) Z moves only to the ground found, so a drop
 /// onto lower ground (the cellar under a shaft) is a snap. With
 /// <see cref="MovementOptions.StepDownHeight"/> set, ground farther below leaves the mover airborne:
@@ -41,6 +42,9 @@ public sealed class PlayerMovementMode
 
     /// <summary>Longest physics step: 0.1 s.</summary>
     public const float MaxStepSeconds = 0.1f;
+
+    /// <summary>Longest frame simulated: 1 s, so at most 10 steps; a longer frame is clamped to it (see <see cref="Update"/>).</summary>
+    public const float MaxFrameSeconds = 1f;
 
     private readonly PhysicsEngine _engine;
 
@@ -96,8 +100,13 @@ public sealed class PlayerMovementMode
     /// <summary>
     /// Advances one frame: turns, moves and resolves, in steps of at most <see cref="MaxStepSeconds"/>.
     /// </summary>
+    /// <remarks>
+    /// Decision: a frame longer than <see cref="MaxFrameSeconds"/> (a stall, a debugger break, a
+    /// garbage value) is clamped to it, so one call simulates at most 10 steps and no frame time can
+    /// hang the host; the time beyond it is dropped, not caught up.
+    /// </remarks>
     /// <param name="intent">The player's intent, held for the whole frame.</param>
-    /// <param name="frameSeconds">Frame time, seconds, ≥ 0 (fixed or variable).</param>
+    /// <param name="frameSeconds">Frame time, seconds, ≥ 0 (fixed or variable); more than <see cref="MaxFrameSeconds"/> counts as <see cref="MaxFrameSeconds"/>.</param>
     /// <returns>How many steps ran and which were refused.</returns>
     /// <exception cref="ArgumentOutOfRangeException">The frame time is negative or not finite.</exception>
     public MovementFrame Update(MovementIntent intent, float frameSeconds)
@@ -112,6 +121,7 @@ public sealed class PlayerMovementMode
             return default;
         }
 
+        frameSeconds = MathF.Min(frameSeconds, MaxFrameSeconds);
         int steps = Math.Max(1, (int)MathF.Ceiling(frameSeconds / MaxStepSeconds));
         float dt = frameSeconds / steps;
         int rejected = 0;

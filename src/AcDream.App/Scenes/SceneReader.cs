@@ -15,6 +15,9 @@ internal static class SceneReader
     /// <summary>Default time limit of a point leg, seconds.</summary>
     public const float DefaultPointLegSeconds = 60f;
 
+    /// <summary>Largest scene file read, bytes: 1 MiB.</summary>
+    public const int MaxFileBytes = 1024 * 1024;
+
     /// <summary>Longest leg, seconds.</summary>
     public const float MaxLegSeconds = 600f;
 
@@ -35,14 +38,31 @@ internal static class SceneReader
         return Parse(reader.ReadToEnd(), "embedded default (src/AcDream.App/Scenes/holtburg-walk.json)");
     }
 
-    /// <summary>Reads a scene file.</summary>
-    /// <exception cref="SceneFormatException">The file cannot be read or is not a valid scene.</exception>
+    /// <summary>Reads a scene file of at most <see cref="MaxFileBytes"/>.</summary>
+    /// <exception cref="SceneFormatException">The file cannot be read, is too large, or is not a valid scene.</exception>
     public static Scene ReadFile(string path)
     {
         string text;
         try
         {
-            text = File.ReadAllText(path);
+            // Read at most one byte past the limit, whatever length the file reports (/dev/zero says 0).
+            var bytes = new byte[MaxFileBytes + 1];
+            int length = 0;
+            using (var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.Read, bufferSize: 1, FileOptions.SequentialScan))
+            {
+                for (int read; length < bytes.Length && (read = stream.Read(bytes, length, bytes.Length - length)) > 0;)
+                {
+                    length += read;
+                }
+            }
+
+            if (length > MaxFileBytes)
+            {
+                throw new SceneFormatException($"{path}: the scene file is larger than {MaxFileBytes / (1024 * 1024)} MiB ({MaxFileBytes} bytes), the limit");
+            }
+
+            using var reader = new StreamReader(new MemoryStream(bytes, 0, length), detectEncodingFromByteOrderMarks: true);
+            text = reader.ReadToEnd();
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {
@@ -203,12 +223,18 @@ internal static class SceneReader
                 throw Error(path, element, "must be a JSON object");
             }
 
+            var seen = new HashSet<string>(StringComparer.Ordinal);
             foreach (JsonProperty property in element.EnumerateObject())
             {
+                string field = path == "(top level)" ? property.Name : $"{path}.{property.Name}";
                 if (Array.IndexOf(allowed, property.Name) < 0)
                 {
-                    string field = path == "(top level)" ? property.Name : $"{path}.{property.Name}";
                     throw Error(field, property.Value, $"unknown field (allowed: {string.Join(", ", allowed)})");
+                }
+
+                if (!seen.Add(property.Name))
+                {
+                    throw Error(field, property.Value, "is given twice (a duplicate key; JSON would silently keep the last)");
                 }
             }
         }

@@ -185,13 +185,19 @@ internal static class WalkSvg
         parent.Add(plans);
     }
 
-    /// <summary>Marching squares over the terrain, sampled on a grid of about 1.5 px; one path per 2 m level.</summary>
+    /// <summary>
+    /// Marching squares over the terrain, sampled on a grid of about 1.5 px; one path per 2 m level.
+    /// The map is padded past the route, so it can reach past the world's edge: there the edge
+    /// landblock's terrain is sampled, clamped to its edge (flat outwards).
+    /// </summary>
     private static void AddContours(XElement parent, HoltburgWorld world, float minX, float maxX, float minY, float maxY, Func<float, float, Vector2> place)
     {
         var terrains = new Dictionary<uint, TerrainSurface>();
+        static int Landblock(int origin, float coordinate) =>
+            (int)Math.Clamp(origin + Math.Floor(coordinate / (double)PhysicsConstants.LandblockSize), 0, PhysicsConstants.MaxLandblockIndex);
         float Z(float x, float y)
         {
-            int lbX = 0xA9 + (int)MathF.Floor(x / 192f), lbY = 0xB4 + (int)MathF.Floor(y / 192f);
+            int lbX = Landblock(0xA9, x), lbY = Landblock(0xB4, y);
             uint id = ((uint)lbX << 24) | ((uint)lbY << 16) | 0xFFFF;
             if (!terrains.TryGetValue(id, out TerrainSurface? terrain))
             {
