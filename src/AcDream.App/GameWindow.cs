@@ -152,7 +152,7 @@ public sealed class GameWindow : IDisposable
             }
 
             string? error = loadError;
-            if (loaded is null || !ApplyLoadedTerrain(id, loaded, out error))
+            if (loaded is null || !ApplyLoadedTerrainLocked(id, loaded, out error))
             {
                 _retryAtFrame[id] = _frame + RetryDelayFrames;
                 _log($"landblock 0x{id:X8}: could not load ({error}); retrying in {RetryDelayFrames} frames.");
@@ -161,7 +161,7 @@ public sealed class GameWindow : IDisposable
 
         foreach (uint id in _loaded.Where(id => !_window.Contains(id)).ToList())
         {
-            UnloadLandblock(id);
+            UnloadLandblockLocked(id);
         }
 
         foreach (uint id in _retryAtFrame.Keys.Where(id => !_window.Contains(id)).ToList())
@@ -270,8 +270,13 @@ public sealed class GameWindow : IDisposable
     /// struct resolve, and calls <see cref="PhysicsEngine.AddLandblock"/>. A cell that cannot be
     /// built is skipped with a warning naming it and the reason.
     /// </summary>
+    /// <remarks>
+    /// The name is the spec's (Phase B.3 hooks the engine into <c>ApplyLoadedTerrainLocked</c>). Here
+    /// "locked" means "on the frame thread, which owns the engine's writes": the streaming lock is no
+    /// longer held while it runs, so events and the log may call back into the window.
+    /// </remarks>
     /// <returns>False, with the reason, when the landblock itself cannot be registered; the engine is then unchanged.</returns>
-    internal bool ApplyLoadedTerrain(uint landblockId, LoadedLandblock loaded, out string? error)
+    internal bool ApplyLoadedTerrainLocked(uint landblockId, LoadedLandblock loaded, out string? error)
     {
         uint id = (landblockId & 0xFFFF0000u) | 0xFFFF;
         error = null;
@@ -327,7 +332,7 @@ public sealed class GameWindow : IDisposable
     }
 
     /// <summary>The unload path: removes a landblock from the engine (nothing happens if it is not registered).</summary>
-    internal void UnloadLandblock(uint landblockId)
+    internal void UnloadLandblockLocked(uint landblockId)
     {
         uint id = (landblockId & 0xFFFF0000u) | 0xFFFF;
         Physics.RemoveLandblock(id);

@@ -23,7 +23,7 @@ public class GameWindowTests
         var world = new HoltburgWorld();
         using var window = new GameWindow(world, world.HeightTable, Holtburg);
 
-        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out string? error).Should().BeTrue($"error: {error}");
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out string? error).Should().BeTrue($"error: {error}");
 
         window.Physics.ContainsLandblock(Holtburg).Should().BeTrue();
         ResolveResult door = window.Physics.Resolve(OutsideDoor, 0xA9B40001u, IntoDoor, 0.5f);
@@ -47,9 +47,9 @@ public class GameWindowTests
     {
         var world = new HoltburgWorld();
         using var window = new GameWindow(world, world.HeightTable, Holtburg);
-        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
 
-        window.UnloadLandblock(Holtburg);
+        window.UnloadLandblockLocked(Holtburg);
 
         window.Physics.ContainsLandblock(Holtburg).Should().BeFalse();
         window.Physics.LandblockCount.Should().Be(0);
@@ -70,10 +70,10 @@ public class GameWindowTests
             .Select(_ => (Pos: new Vector3(120f + (random.NextSingle() * 50f), random.NextSingle() * 25f, 94f), Delta: new Vector3((random.NextSingle() - 0.5f) * 2f, (random.NextSingle() - 0.5f) * 2f, 0f)))
             .ToList();
 
-        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
         var first = queries.Select(q => window.Physics.Resolve(q.Pos, 0xA9B40001u, q.Delta, 0.5f)).ToList();
-        window.UnloadLandblock(Holtburg);
-        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.UnloadLandblockLocked(Holtburg);
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
         var second = queries.Select(q => window.Physics.Resolve(q.Pos, 0xA9B40001u, q.Delta, 0.5f)).ToList();
 
         second.Should().Equal(first, "a reloaded landblock resolves exactly as the first load did");
@@ -95,7 +95,7 @@ public class GameWindowTests
         environments.Add(0x0D000180u, new Environment { Id = 0x0D000180u, Cells = { [0] = broken } });
         var cells = real.EnvCells.Append(new EnvCell { Id = 0xA9B40180u, EnvironmentId = 0x0180, Position = new Frame() }).ToList();
 
-        window.ApplyLoadedTerrain(Holtburg, new LoadedLandblock(real.LandBlock, cells, environments), out string? error).Should().BeTrue($"error: {error}");
+        window.ApplyLoadedTerrainLocked(Holtburg, new LoadedLandblock(real.LandBlock, cells, environments), out string? error).Should().BeTrue($"error: {error}");
 
         warnings.Should().HaveCount(2, string.Join(" | ", warnings));
         warnings.Should().Contain(w => w.Contains("0xA9B40145") && w.Contains("environment 0x0D000145 is missing"), string.Join(" | ", warnings));
@@ -114,7 +114,7 @@ public class GameWindowTests
         LoadedLandblock real = world.Load(Holtburg);
         var bad = new LoadedLandblock(new LandBlock { Id = Holtburg, Height = new byte[80] }, real.EnvCells, real.Environments);
 
-        window.ApplyLoadedTerrain(Holtburg, bad, out string? error).Should().BeFalse();
+        window.ApplyLoadedTerrainLocked(Holtburg, bad, out string? error).Should().BeFalse();
 
         error.Should().Contain("81").And.Contain("80");
         window.Physics.LandblockCount.Should().Be(0, "never half a landblock");
@@ -162,13 +162,13 @@ public class GameWindowTests
     {
         var world = new HoltburgWorld();
         using var window = new GameWindow(world, world.HeightTable, Holtburg);
-        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
         var mode = new PlayerMovementMode(window.Physics, new Vector3(x, y, z), cellId, 0f);
         mode.Update(default, 1f / 30f);
         Vector3 standing = mode.Position;
         uint cell = mode.CellId;
 
-        window.UnloadLandblock(Holtburg);
+        window.UnloadLandblockLocked(Holtburg);
         var walk = new MovementIntent(1f, 0f, 0f, false);
         for (int i = 0; i < 30; i++)
         {
@@ -177,7 +177,7 @@ public class GameWindowTests
             mode.IsOnGround.Should().BeTrue($"frame {i}: held, not falling");
         }
 
-        window.ApplyLoadedTerrain(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out _).Should().BeTrue();
         mode.Update(default, 1f / 30f);
         mode.Position.Should().Be(standing, "after the reload the mover stands where it stood");
         mode.CellId.Should().Be(cell);
@@ -210,7 +210,10 @@ public class GameWindowTests
             float.IsFinite(r.Position.X + r.Position.Y + r.Position.Z).Should().BeTrue($"frame {frame}: {r.Position}");
             bool here = engine.ContainsLandblock(window.LandblockAt(observer));
             bool there = engine.ContainsLandblock(window.LandblockAt(observer + new Vector3(0.5f, 0.5f, 0f)));
-            r.Position.Z.Should().Be(here && there ? 10f : 0f, $"frame {frame}: on the flat land (10 m) when it is loaded, held at Z 0 when not; {r}");
+            // On the flat land (10 m) when it is loaded: moved there, or refused (unloaded land ahead) and
+            // lifted onto the ground under it, as a mover below its ground always is. Held at Z 0 when not.
+            r.Position.Z.Should().Be(here ? 10f : 0f, $"frame {frame}: on the flat land (10 m) when it is loaded (ahead: {there}), held at Z 0 when not; {r}");
+            r.IsOnGround.Should().BeTrue($"frame {frame}: on the ground or held; {r}");
             engine.LandblockCount.Should().Be(window.LoadedLandblocks.Count, $"frame {frame}: the engine holds what the window loaded");
         }
 
