@@ -261,8 +261,15 @@ public sealed class PhysicsEngine
         }
 
         Vector2 start = candidate - delta; // the mover, in the candidate's landblock frame
-        if (TryEnterCell(there, candidate, pos.Z, stepUp, out int cellIndex, out float floorZ))
+        float hereZ = here.Terrain.SampleZUnchecked(local.X, local.Y);
+        float terrainZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
+        if (TryEnterCell(there, candidate, terrainZ, stepUp, out int cellIndex, out float floorZ))
         {
+            if (floorZ - pos.Z > stepUp && floorZ - MathF.Max(pos.Z, hereZ) > stepUp)
+            {
+                return Refuse(lbX, lbY, local, pos.Z, hereZ, hereCellId, in options); // the floor's edge is a step too high
+            }
+
             if (options.DoorsOnly
                 && !StartsOverFloor(there, cellIndex, start, pos.Z, stepUp)
                 && !TryEnterByDoor(there, start, candidate, pos.Z, stepUp, out cellIndex, out floorZ))
@@ -274,8 +281,6 @@ public sealed class PhysicsEngine
             return Land(ToWorld(toX, toY, candidate, floorZ), pos.Z, there.Cells[cellIndex].CellId, in options);
         }
 
-        float hereZ = here.Terrain.SampleZUnchecked(local.X, local.Y);
-        float terrainZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
         if (options.DoorsOnly && StepsIntoStorey(there, start, pos.Z, candidate, terrainZ))
         {
             return Refuse(lbX, lbY, local, pos.Z, hereZ, hereCellId, in options); // the building's outer wall
@@ -343,7 +348,7 @@ public sealed class PhysicsEngine
         foreach (int i in entry.EntryBuckets[OutdoorCellNumber(p1) - 1])
         {
             CellSurface cell = entry.Cells[i];
-            if (cell.TrySampleFloor(p1.X, p1.Y, z1, out float there) && IsStorey(there - z1)
+            if (cell.TrySampleFloor(p1.X, p1.Y, z1, out float there) && IsStorey(there - z1) && !IsPastOutdoorDoorway(entry, i, p1)
                 && !(cell.TrySampleFloor(p0.X, p0.Y, z0, out float here) && IsStorey(here - z0)))
             {
                 return true;
@@ -574,7 +579,12 @@ public sealed class PhysicsEngine
 
     /// <summary>
     /// Outdoor entry: the floor, among the cells over the candidate's outdoor cell, nearest the
-    /// mover's Z and within the step height of it (above or below); ties go to the lower cell id.
+    /// ground the mover would stand on there (<paramref name="z"/>, the terrain's Z) and within the
+    /// step height of it (above or below); ties go to the lower cell id. Measuring from the ground
+    /// there, not from the feet before the move, makes the answer the same when the mover stands
+    /// still at the end point.
+    /// A floor point on or past one of the cell's doorways to the outdoors is outdoors: that is where
+    /// a mover leaving by the door lands, so it must not be taken back in by standing still.
     /// </summary>
     private static bool TryEnterCell(LandblockEntry entry, Vector2 p, float z, float stepUp, out int cellIndex, out float floorZ)
     {
@@ -583,7 +593,7 @@ public sealed class PhysicsEngine
         float bestDistance = float.MaxValue;
         foreach (int i in entry.EntryBuckets[OutdoorCellNumber(p) - 1])
         {
-            if (entry.Cells[i].TrySampleFloor(p.X, p.Y, z, out float candidate))
+            if (entry.Cells[i].TrySampleFloor(p.X, p.Y, z, out float candidate) && !IsPastOutdoorDoorway(entry, i, p))
             {
                 float distance = MathF.Abs(candidate - z);
                 if (distance <= stepUp && distance < bestDistance)
@@ -596,6 +606,26 @@ public sealed class PhysicsEngine
         }
 
         return cellIndex >= 0;
+    }
+
+    /// <summary>
+    /// Whether <paramref name="p"/> (landblock-local) lies on or beyond the plane of one of cell
+    /// <paramref name="cellIndex"/>'s doorways to the outdoors, within <see cref="PhysicsConstants.EdgeTolerance"/>,
+    /// measured horizontally.
+    /// </summary>
+    private static bool IsPastOutdoorDoorway(LandblockEntry entry, int cellIndex, Vector2 p)
+    {
+        ReadOnlySpan<PortalShape> shapes = entry.Cells[cellIndex].PortalShapes;
+        int[] targets = entry.PortalTargets[cellIndex];
+        for (int k = 0; k < shapes.Length; k++)
+        {
+            if (targets[k] == LandblockEntry.Outdoors && shapes[k].Kind == PortalKind.Vertical && shapes[k].HorizontalDistance(p) > -PhysicsConstants.EdgeTolerance)
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     /// <summary>

@@ -134,6 +134,14 @@ internal sealed class PortalShape
         return WithinOpening(p0 + ((p1 - p0) * t), z, stepUp) ? t : -1f;
     }
 
+    /// <summary>
+    /// For a vertical portal: how far (metres) <paramref name="p"/> lies beyond the portal's plane,
+    /// out of the owning cell, measured along the horizontal part of the out-normal (negative: on the
+    /// cell's side).
+    /// </summary>
+    public float HorizontalDistance(Vector2 p) =>
+        (OutNormal.X * (p.X - Origin.X)) + (OutNormal.Y * (p.Y - Origin.Y));
+
     /// <summary>Whether a point of the portal's plane, with the feet at <paramref name="z"/>, is in the opening.</summary>
     private bool WithinOpening(Vector2 q, float z, float stepUp)
     {
