@@ -156,13 +156,20 @@ public sealed class PhysicsEngine
     /// Positions and the delta are world metres. Only the horizontal part of <paramref name="delta"/>
     /// moves the mover; its Z is ignored (the caller's gravity moves <paramref name="currentPos"/>.Z).
     /// A rise of exactly <paramref name="stepUpHeight"/> is accepted; more is rejected and the
-    /// mover stays at <paramref name="currentPos"/>. See <c>docs/physics.md</c> for the algorithm.
+    /// mover keeps the XY of <paramref name="currentPos"/>. See <c>docs/physics.md</c> for the algorithm.
+    /// </para>
+    /// <para>
+    /// The answer is computed at the XY it returns (the end point rounded to the world frame first),
+    /// so resolving it again with a zero delta returns it bit for bit. A refused mover keeps its Z
+    /// when within <see cref="PhysicsConstants.GroundTolerance"/> of the ground under it; below the
+    /// ground it is lifted onto it; above it, it keeps its Z with <c>IsOnGround</c> false.
     /// </para>
     /// <para>
     /// A mover whose landblock is not registered (streaming has not caught up) is held where it is,
     /// on the ground, so it does not fall through land that is not loaded. A move into such a
     /// landblock, or off the world, is rejected. When nothing is under an indoor mover, the result
-    /// keeps its position and reports <c>IsOnGround = false</c>.
+    /// keeps its position and reports <c>IsOnGround = false</c>. One call visits at most
+    /// <see cref="PhysicsConstants.MaxCellVisits"/> cells, whatever the portal graph.
     /// </para>
     /// </remarks>
     /// <param name="currentPos">Where the mover's feet are, world metres.</param>
