@@ -14,8 +14,7 @@ if (args.Contains("--accuracy"))
     return 0;
 }
 
-// BenchmarkDotNet 0.14.0 (the newest on this machine's NuGet mirror) predates .NET 10, yet its
-// default toolchain works here: it builds a child project for the host's runtime (about 15 s per
+// BenchmarkDotNet's default toolchain builds a child project for the host's runtime (about 15 s per
 // run). `--in-process` runs the benchmarks in this (Release) process instead, with no child build.
 bool inProcess = args.Contains("--in-process");
 args = args.Where(a => a != "--in-process").ToArray();
