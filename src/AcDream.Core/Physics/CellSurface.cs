@@ -132,12 +132,10 @@ public sealed class CellSurface
     /// this cell's floor).
     ///
     /// <para>
-    /// Uses PhysicsPolygons (not rendering Polygons) — these define
-    /// the walkable surfaces. For each polygon, does a point-in-
-    /// triangle test (after fan triangulation) + barycentric Z
-    /// interpolation. Brute-force iteration over all polygons;
-    /// cell polygon counts are small (typically &lt; 20) so BSP
-    /// acceleration is deferred.
+    /// Uses PhysicsPolygons (not rendering Polygons): the walkable ones (winding normal Z at least
+    /// <see cref="PhysicsConstants.FloorZ"/>), fan-triangulated once at construction. A query looks
+    /// only at the triangles a uniform grid lists near the point (all of them for small floors) and
+    /// takes the Z of the polygon's plane there (see the class remarks).
     /// </para>
     /// </summary>
     /// <remarks>
@@ -204,6 +202,47 @@ public sealed class CellSurface
         }
 
         return found;
+    }
+
+    /// <summary>
+    /// <see cref="TrySampleFloor(float, float, float, out float)"/> with the unit normal (pointing up)
+    /// of the floor found. For the host's queries, not the per-move path: it scans the floor once more.
+    /// </summary>
+    internal bool TrySampleFloor(float x, float y, float referenceZ, out float z, out Vector3 normal)
+    {
+        normal = default;
+        if (!TrySampleFloor(x, y, referenceZ, out z))
+        {
+            return false;
+        }
+
+        foreach (FloorTriangle triangle in _floors)
+        {
+            if (triangle.TrySample(x, y, out float at) && at == z)
+            {
+                normal = triangle.Normal;
+                break;
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>
+    /// The walkable triangles of this cell's floor, exactly as the engine samples them (landblock-local
+    /// metres): what a map should draw so that it cannot disagree with the physics. A new array each call.
+    /// </summary>
+    public FloorTriangleInfo[] GetFloorTriangles()
+    {
+        var result = new FloorTriangleInfo[_floors.Length];
+        for (int i = 0; i < result.Length; i++)
+        {
+            ref readonly FloorTriangle t = ref _floors[i];
+            result[i] = new FloorTriangleInfo(
+                new Vector3(t.A, t.ZAt(t.A)), new Vector3(t.B, t.ZAt(t.B)), new Vector3(t.C, t.ZAt(t.C)));
+        }
+
+        return result;
     }
 
     private static FloorTriangle[] BuildFloors(string cell, CellStruct cellStruct, CellTransform transform)

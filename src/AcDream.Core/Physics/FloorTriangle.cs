@@ -112,6 +112,12 @@ internal readonly struct FloorTriangle
         return true;
     }
 
+    /// <summary>The unit normal of the plane the triangle samples (pointing up).</summary>
+    public Vector3 Normal => Vector3.Normalize(new Vector3(-Gradient.X, -Gradient.Y, 1f));
+
+    /// <summary>The triangle's Z at vertex (x, y) of it: its plane, clamped to its Z range, as a sample there gives.</summary>
+    public float ZAt(Vector2 vertex) => Math.Clamp(PlaneZ + Vector2.Dot(Gradient, vertex - PlanePoint), ZMin, ZMax);
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static float Cross(Vector2 u, Vector2 v) => (u.X * v.Y) - (u.Y * v.X);
 

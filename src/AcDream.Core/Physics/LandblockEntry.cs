@@ -7,11 +7,11 @@ namespace AcDream.Core.Physics;
 /// </summary>
 internal sealed class LandblockEntry
 {
-    /// <summary>Portal target meaning "the outdoors".</summary>
-    public const int Outdoors = -1;
+    /// <summary>Portal target index meaning "out of the building, onto the terrain".</summary>
+    public const int OutdoorTarget = -1;
 
-    /// <summary>Portal target meaning "a cell the engine does not have".</summary>
-    public const int Missing = -2;
+    /// <summary>Portal target index meaning "a cell the engine does not have".</summary>
+    public const int MissingCell = -2;
 
     private readonly Dictionary<uint, int> _indexById;
 
@@ -35,9 +35,9 @@ internal sealed class LandblockEntry
             for (int k = 0; k < targets.Length; k++)
             {
                 uint target = portals[k].TargetCellId;
-                targets[k] = (target & 0xFFFF) == CellIds.Outdoors ? Outdoors
+                targets[k] = (target & 0xFFFF) == CellIds.OutdoorPortalTarget ? OutdoorTarget
                     : _indexById.TryGetValue(target, out int index) ? index
-                    : Missing;
+                    : MissingCell;
             }
 
             PortalTargets[i] = targets;
@@ -55,11 +55,11 @@ internal sealed class LandblockEntry
     /// <summary>The landblock's cells, in ascending id order.</summary>
     public CellSurface[] Cells { get; }
 
-    /// <summary>Per cell, per portal: index of the neighbour in <see cref="Cells"/>, <see cref="Outdoors"/> or <see cref="Missing"/>.</summary>
+    /// <summary>Per cell, per portal: index of the neighbour in <see cref="Cells"/>, <see cref="OutdoorTarget"/> or <see cref="MissingCell"/>.</summary>
     public int[][] PortalTargets { get; }
 
     /// <summary>
-    /// Per outdoor cell (index cx * 8 + cy): the indices of the cells whose floor bounds overlap it.
+    /// Per outdoor cell (index <see cref="CellIds.OutdoorCellNumber"/> − 1): the indices of the cells whose floor bounds overlap it.
     /// Outdoor movers test only these, so cells far away cost nothing.
     /// </summary>
     public int[][] EntryBuckets { get; }
@@ -78,8 +78,8 @@ internal sealed class LandblockEntry
                 continue;
             }
 
-            int cx0 = Bucket(cell.FloorMin.X), cx1 = Bucket(cell.FloorMax.X);
-            int cy0 = Bucket(cell.FloorMin.Y), cy1 = Bucket(cell.FloorMax.Y);
+            int cx0 = CellIds.OutdoorColumn(cell.FloorMin.X), cx1 = CellIds.OutdoorColumn(cell.FloorMax.X);
+            int cy0 = CellIds.OutdoorColumn(cell.FloorMin.Y), cy1 = CellIds.OutdoorColumn(cell.FloorMax.Y);
             for (int cx = cx0; cx <= cx1; cx++)
             {
                 for (int cy = cy0; cy <= cy1; cy++)
@@ -97,7 +97,4 @@ internal sealed class LandblockEntry
 
         return buckets;
     }
-
-    private static int Bucket(float coordinate) =>
-        (int)Math.Clamp(MathF.Floor(coordinate / PhysicsConstants.CellSize), 0f, PhysicsConstants.CellsPerSide - 1);
 }

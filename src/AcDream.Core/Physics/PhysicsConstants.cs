@@ -20,6 +20,19 @@ public static class PhysicsConstants
     /// <summary>Highest landblock X or Y index of the world (the world has 255 × 255 landblocks).</summary>
     public const int MaxLandblockIndex = 254;
 
+    /// <summary>Landblock indices per side of the id space (0x00..0xFF; 0xFF is off the world): the size of the engine's landblock table.</summary>
+    public const int WorldSide = 256;
+
+    /// <summary>
+    /// How far (metres) an outdoor mover may stand outside the landblock its cell id names and still
+    /// be resolved from that landblock: covers the rounding of world positions at seams far from the
+    /// origin, where a position can round onto the neighbour's side of the seam.
+    /// </summary>
+    public const float SeamSlack = 1f;
+
+    /// <summary>Most sub-steps one swept move takes (see <see cref="MovementOptions.SweepStepLength"/>): 65,536; a longer move gets longer sub-steps.</summary>
+    public const int MaxSweepSteps = 1 << 16;
+
     /// <summary>
     /// A polygon is a walkable floor when the Z of its unit normal is at least this (about 48.4°),
     /// the game's walkable limit. Walls (normal Z = 0) and ceilings (negative) never are.

@@ -135,6 +135,12 @@ internal sealed class PortalShape
     }
 
     /// <summary>
+    /// For a vertical portal: the unit normal of the wall it is cut in, facing into the owning cell
+    /// (horizontal). What a move that crosses the portal's plane beside the opening runs into.
+    /// </summary>
+    public Vector3 WallNormal => new(-Tangent.Y, Tangent.X, 0f); // the tangent turned a quarter back: −(horizontal out-normal)
+
+    /// <summary>
     /// For a vertical portal: how far (metres) <paramref name="p"/> lies beyond the portal's plane,
     /// out of the owning cell, measured along the horizontal part of the out-normal (negative: on the
     /// cell's side).

@@ -17,4 +17,23 @@ namespace AcDream.Core.Physics;
 public readonly record struct ResolveResult(
     Vector3 Position,
     uint CellId,
-    bool IsOnGround);
+    bool IsOnGround)
+{
+    /// <summary>
+    /// Why the mover ended where it did: moved, held, or which refusal stopped it. With swept moves,
+    /// a move stopped part way reports the refusal that stopped it (and the last accepted position).
+    /// </summary>
+    /// <value><see cref="ResolveOutcome.Moved"/> by default.</value>
+    public ResolveOutcome Outcome { get; init; }
+
+    /// <summary>
+    /// Where a surface stopped the move, its unit normal (world axes, pointing towards the mover's
+    /// side): the terrain's under a step or slope too steep, a doorway wall's when the move crossed
+    /// a doorway's plane beside its opening. Zero otherwise (moved, held, unloaded land, the edge of
+    /// the world, a floor edge, a building's outer wall).
+    /// </summary>
+    public Vector3 SurfaceNormal { get; init; }
+
+    /// <summary>Whether the move was refused (the mover kept its XY): an outcome other than moved or held.</summary>
+    public bool IsRefused => Outcome > ResolveOutcome.Held;
+}

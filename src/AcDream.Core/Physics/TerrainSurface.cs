@@ -1,3 +1,4 @@
+using System.Numerics;
 using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
@@ -101,9 +102,9 @@ public sealed class TerrainSurface
     public uint? LandblockId { get; }
 
     /// <summary>
-    /// Bilinear-interpolated terrain Z at (localX, localY) in
-    /// landblock-local coordinates (0..192 range). Clamps to
-    /// the landblock bounds if the position is outside.
+    /// Terrain Z at (localX, localY) in landblock-local coordinates (0..192 range): the game's
+    /// triangle under the point (three-argument constructor), or the spec's bilinear patch (the
+    /// two-argument one). Clamps to the landblock bounds if the position is outside.
     /// </summary>
     /// <remarks>
     /// Metres in, metres out. With the game's triangles (the three-argument constructor) the Z is
@@ -140,8 +141,7 @@ public sealed class TerrainSurface
             ThrowNotFinite(localX, localY);
         }
 
-        Locate(localX, localY, out int cx, out int cy, out _, out _);
-        return (uint)(cx * PhysicsConstants.CellsPerSide + cy + 1);
+        return CellIds.OutdoorCellNumberUnchecked(localX, localY);
     }
 
     /// <summary>
@@ -166,7 +166,13 @@ public sealed class TerrainSurface
     /// Z of the unit surface normal at a point already known to be finite: of the triangle under it
     /// (game triangles) or of the bilinear patch's tangent plane. 1 on flat ground.
     /// </summary>
-    internal float NormalZUnchecked(float localX, float localY)
+    internal float NormalZUnchecked(float localX, float localY) => NormalUnchecked(localX, localY).Z;
+
+    /// <summary>
+    /// The unit surface normal (pointing up) at a point already known to be finite: of the triangle
+    /// under it (game triangles) or of the bilinear patch's tangent plane. (0, 0, 1) on flat ground.
+    /// </summary>
+    internal Vector3 NormalUnchecked(float localX, float localY)
     {
         Locate(localX, localY, out int cx, out int cy, out double u, out double v);
         int sw = (cx * Side) + cy;
@@ -187,15 +193,15 @@ public sealed class TerrainSurface
         }
 
         double gx = du / PhysicsConstants.CellSize, gy = dv / PhysicsConstants.CellSize;
-        return (float)(1.0 / Math.Sqrt(1.0 + (gx * gx) + (gy * gy)));
+        double n = 1.0 / Math.Sqrt(1.0 + (gx * gx) + (gy * gy));
+        return new Vector3((float)(-gx * n), (float)(-gy * n), (float)n);
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static void Locate(float x, float y, out int cx, out int cy, out double u, out double v)
     {
-        double fx = Math.Clamp(x, 0f, PhysicsConstants.LandblockSize) * (1.0 / PhysicsConstants.CellSize);
-        double fy = Math.Clamp(y, 0f, PhysicsConstants.LandblockSize) * (1.0 / PhysicsConstants.CellSize);
-        cx = Math.Min((int)fx, PhysicsConstants.CellsPerSide - 1);
+        double fx = CellIds.InCells(x), fy = CellIds.InCells(y);
+        cx = Math.Min((int)fx, PhysicsConstants.CellsPerSide - 1); // = CellIds.OutdoorColumn
         cy = Math.Min((int)fy, PhysicsConstants.CellsPerSide - 1);
         u = fx - cx;
         v = fy - cy;

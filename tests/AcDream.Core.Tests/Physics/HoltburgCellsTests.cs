@@ -173,7 +173,7 @@ public class HoltburgCellsTests
         var pos = new Vector3(136.5f, 10f, GroundZ);
 
         engine.Resolve(pos, 0xA9B40144u, new Vector3(-0.4f, 0, 0), PlayerStep)
-            .Should().Be(new ResolveResult(pos, 0xA9B40144u, true));
+            .Should().Be(new ResolveResult(pos, 0xA9B40144u, true) { Outcome = ResolveOutcome.Wall });
     }
 
     [Fact]

@@ -213,7 +213,7 @@ public class MovementOptionsTests
 
         engine.Resolve(pos, 0, delta, Step).CellId.Should().Be(0xA9B40143u, "the spec enters wherever a floor lies under the mover");
         engine.Resolve(pos, 0, delta, Step, new MovementOptions { DoorsOnly = true })
-            .Should().Be(new ResolveResult(pos, 0xA9B40029u, true), "the outer wall stops the mover at (138, 3.6), outdoor cell cx 5 cy 0: 0x29");
+            .Should().Be(new ResolveResult(pos, 0xA9B40029u, true) { Outcome = ResolveOutcome.OuterWall }, "the outer wall stops the mover at (138, 3.6), outdoor cell cx 5 cy 0: 0x29");
     }
 
     [Fact]

@@ -92,7 +92,7 @@ public class PhysicsEngineTests
         CellSurface room = new CellBuilder(0xA9B40100u).Floor(10, 10, 12, 14, 0).Floor(12, 10, 14, 14, 1f).Build();
         engine = MakeEngine(FlatTerrain(-20f), room);
         engine.Resolve(new Vector3(11.8f, 12, 0), 0xA9B40100u, new Vector3(0.4f, 0, 0), Step)
-            .Should().Be(new ResolveResult(new Vector3(11.8f, 12, 0), 0xA9B40100u, true));
+            .Should().Be(new ResolveResult(new Vector3(11.8f, 12, 0), 0xA9B40100u, true) { Outcome = ResolveOutcome.StepTooHigh });
     }
 
     [Fact]
@@ -140,9 +140,9 @@ public class PhysicsEngineTests
         var start = new Vector3(20.3f, 20.5f, 50.2f); // south of the doorway (y 21..23)
 
         engine.Resolve(start, 0xA9B40100u, new Vector3(-0.5f, 0, 0), Step)
-            .Should().Be(new ResolveResult(start, 0xA9B40100u, true));
+            .Should().BeEquivalentTo(new { Position = start, CellId = 0xA9B40100u, IsOnGround = true, Outcome = ResolveOutcome.Wall });
         engine.Resolve(start, 0xA9B40100u, new Vector3(0, -0.6f, 0), Step)
-            .Should().Be(new ResolveResult(start, 0xA9B40100u, true), "no portal on the south wall");
+            .Should().Be(new ResolveResult(start, 0xA9B40100u, true) { Outcome = ResolveOutcome.Wall }, "no portal on the south wall");
     }
 
     [Fact]
@@ -211,7 +211,7 @@ public class PhysicsEngineTests
         var pos = new Vector3(191.5f, 10, 50);
 
         engine.Resolve(pos, 0xA9B40039u, new Vector3(1, 0, 0), Step)
-            .Should().Be(new ResolveResult(pos, 0xA9B40039u, true));
+            .Should().Be(new ResolveResult(pos, 0xA9B40039u, true) { Outcome = ResolveOutcome.UnloadedAhead });
         engine.Resolve(new Vector3(0.5f, 0.5f, 50), 0xA9B40001u, new Vector3(-1, -1, 0), Step)
             .Position.Should().Be(new Vector3(0.5f, 0.5f, 50));
     }
@@ -259,7 +259,7 @@ public class PhysicsEngineTests
 
         engine.LandblockCount.Should().Be(0);
         engine.Resolve(new Vector3(19.8f, 22, 10), 0xA9B40000u, new Vector3(0.5f, 0, 0), Step)
-            .Should().Be(new ResolveResult(new Vector3(19.8f, 22, 10), 0xA9B40001u, true), "unloaded land holds the mover");
+            .Should().Be(new ResolveResult(new Vector3(19.8f, 22, 10), 0xA9B40001u, true) { Outcome = ResolveOutcome.Held }, "unloaded land holds the mover");
 
         engine.AddLandblock(Holtburg, FlatTerrain(50f), [room]);
         engine.Resolve(new Vector3(19.8f, 22, 50), 0xA9B40000u, new Vector3(0.5f, 0, 0), Step).CellId.Should().Be(0xA9B40100u);
@@ -298,7 +298,9 @@ public class PhysicsEngineTests
             .Should().Be(0xA9B40101u, "through the doorway");
         var besideDoor = new Vector3(13.9f, 10.5f, 0);
         engine.Resolve(besideDoor, 0xA9B40100u, new Vector3(0.2f, 0, 0), Step)
-            .Should().Be(new ResolveResult(besideDoor, 0xA9B40100u, true), "beside the doorway is the wall, though B's floor lies beyond it");
+            .Should().BeEquivalentTo(
+                new { Position = besideDoor, CellId = 0xA9B40100u, IsOnGround = true, Outcome = ResolveOutcome.Wall },
+                "beside the doorway is the wall, though B's floor lies beyond it");
         engine.Resolve(besideDoor, 0xA9B40100u, new Vector3(0.2f, 0, 0), Step, MovementOptions.Player).Position.Should().Be(besideDoor);
     }
 }

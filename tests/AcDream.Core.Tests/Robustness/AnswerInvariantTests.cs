@@ -75,7 +75,7 @@ public class AnswerInvariantTests
                     if (stable)
                     {
                         ResolveResult again = engine.Resolve(r.Position, r.CellId, Vector3.Zero, step, options);
-                        again.Should().Be(r, $"fixed point: {what} → {r}; in place → {again}");
+                        (again.Position, again.CellId, again.IsOnGround).Should().Be((r.Position, r.CellId, r.IsOnGround), $"fixed point: {what} → {r}; in place → {again}");
                     }
 
                     checkedAnswers++;

@@ -148,7 +148,7 @@ public class GeometryTests
         var engine = new PhysicsEngine(Holtburg);
         engine.AddLandblock(Holtburg, FlatTerrain(50f), [room]);
         var pos = new Vector3(20.3f, 22, 50);
-        engine.Resolve(pos, CellId, new Vector3(-0.5f, 0, 0), 0.5f).Should().Be(new ResolveResult(pos, CellId, true), "no portal to pass: a wall");
+        engine.Resolve(pos, CellId, new Vector3(-0.5f, 0, 0), 0.5f).Should().Be(new ResolveResult(pos, CellId, true) { Outcome = ResolveOutcome.Wall }, "no portal to pass: a wall");
         engine.Resolve(pos, CellId, new Vector3(0.5f, 0, 0), 0.5f).Position.X.Should().BeApproximately(20.8f, 1e-5f);
     }
 

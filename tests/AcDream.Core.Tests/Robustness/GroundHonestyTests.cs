@@ -87,7 +87,7 @@ public class GroundHonestyTests
         ResolveResult r = engine.Resolve(new Vector3(32493, 34615, 10), 0xA9B40100, new Vector3(5.0016f, 0, 0), 0.5f);
         ResolveResult again = engine.Resolve(r.Position, r.CellId, Vector3.Zero, 0.5f);
 
-        again.Should().Be(r, $"re-resolving {r} in place must return it (got {again})");
+        (again.Position, again.CellId, again.IsOnGround).Should().Be((r.Position, r.CellId, r.IsOnGround), $"re-resolving {r} in place must return it (got {again})");
         r.IsOnGround.Should().BeTrue();
         r.CellId.Should().Be(0xA9B40100);
     }

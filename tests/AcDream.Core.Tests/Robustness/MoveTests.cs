@@ -67,7 +67,9 @@ public class MoveTests
         {
             foreach (Vector3 delta in new[] { new Vector3(d, 0, 0), new Vector3(0, d, 0), new Vector3(d, d, 1e30f) })
             {
-                engine.Resolve(start.Position, start.CellId, delta, 10f).Should().Be(start, $"delta {delta}: unregistered land or off the world");
+                ResolveResult r = engine.Resolve(start.Position, start.CellId, delta, 10f);
+                (r.Position, r.CellId, r.IsOnGround).Should().Be((start.Position, start.CellId, start.IsOnGround), $"delta {delta}: unregistered land or off the world");
+                r.Outcome.Should().BeOneOf([ResolveOutcome.UnloadedAhead, ResolveOutcome.EdgeOfWorld], $"delta {delta}");
             }
         }
     }

@@ -1,0 +1,68 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Resolves a move of a mover in an indoor cell: locates it in its cell's landblock, runs the portal
+/// search from its cell, and turns the landing into an answer (the step check, walkable slope on
+/// terrain beyond a door, the ground rule for refusals).
+/// </summary>
+internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame frame, PortalTraversal portals)
+{
+    public ResolveResult Resolve(ref MoveQuery q)
+    {
+        int lbX = CellIds.LandblockX(q.CellId), lbY = CellIds.LandblockY(q.CellId);
+        LandblockEntry? entry = registry.Get(lbX, lbY);
+        if (entry is null)
+        {
+            return new ResolveResult(q.Position, q.CellId, true) { Outcome = ResolveOutcome.Held }; // the cell's landblock is not loaded
+        }
+
+        if (!entry.TryGetCellIndex(q.CellId, out int cellIndex))
+        {
+            throw new ArgumentException($"cell 0x{q.CellId:X8} is not registered in its landblock 0x{q.CellId | 0xFFFF:X8}.", "currentCellId");
+        }
+
+        q.Entry = entry;
+        q.P0 = frame.Representable(lbX, lbY, new Vector2(q.Position.X, q.Position.Y) - frame.Origin(lbX, lbY));
+        q.P1 = frame.Representable(lbX, lbY, q.P0 + q.Delta);
+        Landing landing = portals.FindLanding(ref q, Hop.Start(cellIndex));
+        CellSurface cell = entry.Cells[cellIndex];
+        switch (landing.Kind)
+        {
+            case Arrival.Floor or Arrival.Terrain when IsStepTooHigh(cell, q.P0, q.Z, landing.Z, q.StepUp):
+                return Refuse(ref q, cell, ResolveOutcome.StepTooHigh);
+            case Arrival.Floor:
+                return Answers.Land(frame.ToWorld(lbX, lbY, q.P1, landing.Z), q.Z, entry.Cells[landing.CellIndex].CellId, in q.Options);
+            case Arrival.Terrain:
+                LandblockEntry land = landing.Land!;
+                Vector2 local = landing.TerrainLocal;
+                if (q.Options.WalkableSlope && landing.Z > q.Z
+                    && land.Terrain.NormalUnchecked(local.X, local.Y) is var normal && normal.Z < PhysicsConstants.FloorZ)
+                {
+                    return Refuse(ref q, cell, ResolveOutcome.SlopeTooSteep, normal);
+                }
+
+                return Answers.Land(frame.ToWorld(land.X, land.Y, local, landing.Z), q.Z, WorldFrame.OutdoorCellId(land.X, land.Y, local), in q.Options);
+            default:
+                // A wall, a missing cell, unloaded land, or nothing under the mover at all.
+                return Refuse(ref q, cell, landing.Refusal, landing.WallNormal);
+        }
+    }
+
+    /// <summary>The mover stays where it is, on its own cell's floor if it is at (or below) it.</summary>
+    private ResolveResult Refuse(ref MoveQuery q, CellSurface cell, ResolveOutcome why, Vector3 normal = default) =>
+        Answers.Refuse(
+            in frame, q.Entry.X, q.Entry.Y, q.P0, q.Z,
+            cell.TrySampleFloor(q.P0.X, q.P0.Y, q.Z, out float floorHere) ? floorHere : null,
+            q.CellId, in q.Options, why, normal);
+
+    /// <summary>
+    /// A rise is too high when it is more than the step height above the mover's Z, and above the
+    /// floor under the mover too where the mover has sunk below that floor (so a mover placed under
+    /// its floor can walk out instead of being stuck). The floor is sampled only on that rare path.
+    /// </summary>
+    private static bool IsStepTooHigh(CellSurface cell, Vector2 p0, float z, float newZ, float stepUp) =>
+        newZ - z > stepUp
+        && (!cell.TrySampleFloor(p0.X, p0.Y, z, out float floorHere) || newZ - MathF.Max(z, floorHere) > stepUp);
+}

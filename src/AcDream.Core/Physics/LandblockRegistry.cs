@@ -1,0 +1,39 @@
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The registered landblocks, one slot per landblock of the world. Readers (any number of threads
+/// resolving) and one writer (registering and removing) share it without locks: an entry is
+/// immutable and built completely before it is published by one reference write, so a reader sees
+/// each landblock wholly as it was before a change or wholly after it, never half of one.
+/// </summary>
+internal sealed class LandblockRegistry
+{
+    private readonly LandblockEntry?[] _slots = new LandblockEntry?[PhysicsConstants.WorldSide * PhysicsConstants.WorldSide];
+    private int _count;
+
+    /// <summary>Number of registered landblocks.</summary>
+    public int Count => Volatile.Read(ref _count);
+
+    /// <summary>The landblock (lbX, lbY), or null when it is off the world or not registered.</summary>
+    public LandblockEntry? Get(int lbX, int lbY) =>
+        CellIds.IsInWorld(lbX, lbY) ? Volatile.Read(ref _slots[CellIds.LandblockIndex(lbX, lbY)]) : null;
+
+    /// <summary>Publishes <paramref name="entry"/>, replacing any entry of its landblock. One writer at a time.</summary>
+    public void Set(LandblockEntry entry)
+    {
+        LandblockEntry? previous = Interlocked.Exchange(ref _slots[CellIds.LandblockIndex(entry.X, entry.Y)], entry);
+        if (previous is null)
+        {
+            Interlocked.Increment(ref _count);
+        }
+    }
+
+    /// <summary>Removes landblock (lbX, lbY) if registered. One writer at a time.</summary>
+    public void Remove(int lbX, int lbY)
+    {
+        if (CellIds.IsInWorld(lbX, lbY) && Interlocked.Exchange(ref _slots[CellIds.LandblockIndex(lbX, lbY)], null) is not null)
+        {
+            Interlocked.Decrement(ref _count);
+        }
+    }
+}

@@ -1,0 +1,85 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// One move's state, as one value through the resolvers: what the caller asked (position, cell,
+/// horizontal delta, step height, effects), the move in its landblock's frame once located, and how
+/// many cell visits its portal search has left. Passed by reference; nothing here allocates.
+/// </summary>
+internal struct MoveQuery(Vector3 position, uint cellId, Vector2 delta, float stepUp, in MovementOptions options)
+{
+    /// <summary>The mover's feet, world metres.</summary>
+    public readonly Vector3 Position = position;
+
+    /// <summary>The cell the caller says the mover is in.</summary>
+    public readonly uint CellId = cellId;
+
+    /// <summary>The horizontal move, metres.</summary>
+    public readonly Vector2 Delta = delta;
+
+    /// <summary>Highest rise the move may climb, metres.</summary>
+    public readonly float StepUp = stepUp;
+
+    /// <summary>The opt-in effects.</summary>
+    public readonly MovementOptions Options = options;
+
+    /// <summary>The landblock the move is resolved in (indoors: the cell's).</summary>
+    public LandblockEntry Entry = null!;
+
+    /// <summary>The mover, landblock-local (a point that survives the round trip to the world frame).</summary>
+    public Vector2 P0;
+
+    /// <summary>The end of the move, landblock-local, likewise representable.</summary>
+    public Vector2 P1;
+
+    /// <summary>Cell visits the portal search may still make (<see cref="PhysicsConstants.MaxCellVisits"/> per call).</summary>
+    public int CellVisitsLeft = PhysicsConstants.MaxCellVisits;
+
+    /// <summary>The feet's Z, metres.</summary>
+    public readonly float Z => Position.Z;
+}
+
+/// <summary>How a move's answer is formed once its ground is known; shared by both resolvers.</summary>
+internal static class Answers
+{
+    /// <summary>
+    /// The result of arriving over ground at <paramref name="ground"/>: on it, or, with step down on
+    /// and the ground farther below the feet than the step-down height (and the ground tolerance),
+    /// airborne at the feet's Z.
+    /// </summary>
+    public static ResolveResult Land(Vector3 ground, float z, uint cellId, in MovementOptions options) =>
+        options.StepDownHeight is float down && z - ground.Z > MathF.Max(down, PhysicsConstants.GroundTolerance)
+            ? new ResolveResult(ground with { Z = z }, cellId, false)
+            : new ResolveResult(ground, cellId, true);
+
+    /// <summary>
+    /// A refused move: the mover stays at <paramref name="local"/> (landblock-local, in landblock
+    /// (lbX, lbY)). Against <paramref name="ground"/> (the terrain, or its cell's floor nearest its
+    /// feet, under it; null when there is none): feet within <see cref="PhysicsConstants.GroundTolerance"/>
+    /// of it keep their Z and stand on it (the spec's "keep currentPos"); feet deeper below it (sunk), or
+    /// above it by no more than the step-down height, are put on it; feet higher keep their Z and are
+    /// airborne, so the caller's gravity acts.
+    /// </summary>
+    public static ResolveResult Refuse(
+        in WorldFrame frame, int lbX, int lbY, Vector2 local, float z, float? ground, uint cellId, in MovementOptions options,
+        ResolveOutcome why, Vector3 normal = default)
+    {
+        var at = frame.ToWorld(lbX, lbY, local, z);
+        bool onGround = false;
+        if (ground is float g)
+        {
+            float above = z - g;
+            if (MathF.Abs(above) <= PhysicsConstants.GroundTolerance)
+            {
+                onGround = true;
+            }
+            else if (above < 0f || (options.StepDownHeight is float down && above <= down))
+            {
+                (at.Z, onGround) = (g, true);
+            }
+        }
+
+        return new ResolveResult(at, cellId, onGround) { Outcome = why, SurfaceNormal = normal };
+    }
+}

@@ -1,0 +1,209 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Resolves a move of a mover on the terrain: locates it, wraps the end point into the neighbour
+/// landblock across a seam, enters a building's cell whose floor is at the ground there (through a
+/// door only, with doors only), else walks the terrain with the step and slope checks.
+/// </summary>
+internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame frame, PortalTraversal portals)
+{
+    public ResolveResult Resolve(ref MoveQuery q)
+    {
+        frame.Locate(q.Position, q.CellId, out int lbX, out int lbY, out Vector2 local);
+        LandblockEntry? here = registry.Get(lbX, lbY);
+        uint hereCellId = WorldFrame.OutdoorCellId(lbX, lbY, local);
+        if (here is null)
+        {
+            return new ResolveResult(q.Position, hereCellId, true) { Outcome = ResolveOutcome.Held }; // the land under the mover is not loaded
+        }
+
+        Vector2 candidate = local + q.Delta;
+        int toX = lbX, toY = lbY;
+        WorldFrame.Wrap(ref candidate.X, ref toX);
+        WorldFrame.Wrap(ref candidate.Y, ref toY);
+        candidate = frame.Representable(toX, toY, candidate);
+        WorldFrame.Wrap(ref candidate.X, ref toX); // rounding can put it on the far seam
+        WorldFrame.Wrap(ref candidate.Y, ref toY);
+        float hereZ = here.Terrain.SampleZUnchecked(local.X, local.Y);
+        LandblockEntry? there = registry.Get(toX, toY);
+        if (there is null)
+        {
+            return Refuse(ref q, local, hereZ, hereCellId, CellIds.IsInWorld(toX, toY) ? ResolveOutcome.UnloadedAhead : ResolveOutcome.EdgeOfWorld);
+        }
+
+        q.Entry = there;
+        q.P0 = candidate - q.Delta; // the mover, in the candidate's landblock frame
+        q.P1 = candidate;
+        float terrainZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
+        if (TryEnterCell(there, candidate, terrainZ, q.StepUp, out int cellIndex, out float floorZ))
+        {
+            if (floorZ - q.Z > q.StepUp && floorZ - MathF.Max(q.Z, hereZ) > q.StepUp)
+            {
+                return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.StepTooHigh); // the floor's edge is a step too high
+            }
+
+            if (q.Options.DoorsOnly && !StartsOverFloor(there, cellIndex, q.P0, q.Z, q.StepUp) && !TryEnterByDoor(ref q, out cellIndex, out floorZ))
+            {
+                return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.OuterWall);
+            }
+
+            return Answers.Land(frame.ToWorld(toX, toY, candidate, floorZ), q.Z, there.Cells[cellIndex].CellId, in q.Options);
+        }
+
+        if (q.Options.DoorsOnly && StepsIntoStorey(there, q.P0, q.Z, candidate, terrainZ))
+        {
+            return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.OuterWall);
+        }
+
+        if (terrainZ - q.Z > q.StepUp && terrainZ - MathF.Max(q.Z, hereZ) > q.StepUp)
+        {
+            return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.StepTooHigh, there.Terrain.NormalUnchecked(candidate.X, candidate.Y));
+        }
+
+        if (q.Options.WalkableSlope && terrainZ > q.Z && there.Terrain.NormalUnchecked(candidate.X, candidate.Y) is var normal && normal.Z < PhysicsConstants.FloorZ)
+        {
+            return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.SlopeTooSteep, normal);
+        }
+
+        return Answers.Land(frame.ToWorld(toX, toY, candidate, terrainZ), q.Z, WorldFrame.OutdoorCellId(toX, toY, candidate), in q.Options);
+
+        ResolveResult Refuse(ref MoveQuery q, Vector2 at, float ground, uint cellId, ResolveOutcome why, Vector3 surface = default) =>
+            Answers.Refuse(in frame, lbX, lbY, at, q.Z, ground, cellId, in q.Options, why, surface);
+    }
+
+    /// <summary>
+    /// Outdoor entry: the floor, among the cells over the candidate's outdoor cell, nearest the
+    /// ground the mover would stand on there (<paramref name="z"/>, the terrain's Z) and within the
+    /// step height of it (above or below); ties go to the lower cell id. Measuring from the ground
+    /// there, not from the feet before the move, makes the answer the same when the mover stands
+    /// still at the end point. A floor point on or past one of the cell's doorways to the outdoors is
+    /// outdoors: that is where a mover leaving by the door lands.
+    /// </summary>
+    private static bool TryEnterCell(LandblockEntry entry, Vector2 p, float z, float stepUp, out int cellIndex, out float floorZ)
+    {
+        cellIndex = -1;
+        floorZ = 0f;
+        float bestDistance = float.MaxValue;
+        foreach (int i in entry.EntryBuckets[CellIds.OutdoorCellNumberUnchecked(p.X, p.Y) - 1])
+        {
+            if (entry.Cells[i].TrySampleFloor(p.X, p.Y, z, out float candidate) && !IsPastOutdoorDoorway(entry, i, p))
+            {
+                float distance = MathF.Abs(candidate - z);
+                if (distance <= stepUp && distance < bestDistance)
+                {
+                    cellIndex = i;
+                    floorZ = candidate;
+                    bestDistance = distance;
+                }
+            }
+        }
+
+        return cellIndex >= 0;
+    }
+
+    /// <summary>
+    /// Whether <paramref name="p"/> (landblock-local) lies on or beyond the plane of one of cell
+    /// <paramref name="cellIndex"/>'s doorways to the outdoors, within <see cref="PhysicsConstants.EdgeTolerance"/>,
+    /// measured horizontally.
+    /// </summary>
+    private static bool IsPastOutdoorDoorway(LandblockEntry entry, int cellIndex, Vector2 p)
+    {
+        ReadOnlySpan<PortalShape> shapes = entry.Cells[cellIndex].PortalShapes;
+        int[] targets = entry.PortalTargets[cellIndex];
+        for (int k = 0; k < shapes.Length; k++)
+        {
+            if (targets[k] == LandblockEntry.OutdoorTarget && shapes[k].Kind == PortalKind.Vertical && shapes[k].HorizontalDistance(p) > -PhysicsConstants.EdgeTolerance)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>Doors only: whether the mover already stands over the cell's floor (within the step height), so entering it crosses no wall.</summary>
+    private static bool StartsOverFloor(LandblockEntry entry, int cellIndex, Vector2 p0, float z, float stepUp) =>
+        entry.Cells[cellIndex].TrySampleFloor(p0.X, p0.Y, z, out float floorHere) && MathF.Abs(floorHere - z) <= stepUp;
+
+    /// <summary>
+    /// Doors only: whether a move from feet at (<paramref name="p0"/>, <paramref name="z0"/>) to feet at
+    /// (<paramref name="p1"/>, <paramref name="z1"/>) (landblock-local) steps into the storey of a cell
+    /// from outside it: onto its floor outline where the floor is a storey at the feet
+    /// (<see cref="PhysicsConstants.StoreyBelow"/> below to <see cref="PhysicsConstants.StoreyAbove"/> above),
+    /// from where it was not. That is through the building's outer wall.
+    /// </summary>
+    private static bool StepsIntoStorey(LandblockEntry entry, Vector2 p0, float z0, Vector2 p1, float z1)
+    {
+        foreach (int i in entry.EntryBuckets[CellIds.OutdoorCellNumberUnchecked(p1.X, p1.Y) - 1])
+        {
+            CellSurface cell = entry.Cells[i];
+            if (cell.TrySampleFloor(p1.X, p1.Y, z1, out float there) && IsStorey(there - z1) && !IsPastOutdoorDoorway(entry, i, p1)
+                && !(cell.TrySampleFloor(p0.X, p0.Y, z0, out float here) && IsStorey(here - z0)))
+            {
+                return true;
+            }
+        }
+
+        return false;
+
+        static bool IsStorey(float rise) => rise >= -PhysicsConstants.StoreyBelow && rise <= PhysicsConstants.StoreyAbove;
+    }
+
+    /// <summary>
+    /// Doors only: the floor the move (p0 → p1 of <paramref name="q"/>, landblock-local) reaches by
+    /// passing in through the first portal to the outdoors it crosses (of the cells over the outdoor
+    /// cells of p0 and p1), continued as an indoor move from that door's cell, so a door cell thinner
+    /// than the move is passed, not mistaken for a wall. False when no door is crossed, the move ends
+    /// on no floor beyond it, or that floor is more than the step height up.
+    /// </summary>
+    private bool TryEnterByDoor(ref MoveQuery q, out int cellIndex, out float floorZ)
+    {
+        LandblockEntry entry = q.Entry;
+        int doorCell = -1;
+        float doorT = float.MaxValue;
+        FirstDoor(ref q, entry.EntryBuckets[CellIds.OutdoorCellNumberUnchecked(q.P0.X, q.P0.Y) - 1], ref doorCell, ref doorT);
+        FirstDoor(ref q, entry.EntryBuckets[CellIds.OutdoorCellNumberUnchecked(q.P1.X, q.P1.Y) - 1], ref doorCell, ref doorT);
+        cellIndex = -1;
+        floorZ = 0f;
+        if (doorCell < 0)
+        {
+            return false;
+        }
+
+        Landing landing = portals.FindLanding(ref q, Hop.Start(doorCell, doorT));
+        if (landing.Kind != Arrival.Floor || landing.Z - q.Z > q.StepUp)
+        {
+            return false;
+        }
+
+        cellIndex = landing.CellIndex;
+        floorZ = landing.Z;
+        return true;
+    }
+
+    /// <summary>The cell (among <paramref name="cells"/>) whose portal to the outdoors the move crosses inward first.</summary>
+    private static void FirstDoor(ref MoveQuery q, int[] cells, ref int doorCell, ref float doorT)
+    {
+        foreach (int i in cells)
+        {
+            ReadOnlySpan<PortalShape> shapes = q.Entry.Cells[i].PortalShapes;
+            int[] targets = q.Entry.PortalTargets[i];
+            for (int k = 0; k < shapes.Length; k++)
+            {
+                if (targets[k] != LandblockEntry.OutdoorTarget || shapes[k].Kind != PortalKind.Vertical)
+                {
+                    continue;
+                }
+
+                float t = shapes[k].InwardCrossingFraction(q.P0, q.P1, q.Z, q.StepUp);
+                if (t >= 0f && t < doorT)
+                {
+                    doorCell = i;
+                    doorT = t;
+                }
+            }
+        }
+    }
+}

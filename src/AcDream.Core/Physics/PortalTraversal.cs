@@ -1,0 +1,172 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Indoor portal traversal: where a move from p0 to p1 that starts in a cell ends, following the
+/// doorways it crosses and the floor openings it stands over, through as many cells as it passes
+/// (at most <see cref="PhysicsConstants.MaxPortalHops"/> deep and <see cref="PhysicsConstants.MaxCellVisits"/>
+/// visits in all). Reads the registry only to land on the terrain beyond a portal to the outdoors.
+/// </summary>
+internal sealed class PortalTraversal(LandblockRegistry registry)
+{
+    /// <summary>
+    /// Where the move <paramref name="q"/> (its entry, p0, p1, feet Z and step) ends when it is in
+    /// cell <paramref name="hop"/>.Cell: through the first doorway it crosses (after
+    /// <paramref name="hop"/>.TStart along the move), else on this cell's floor, else through a floor
+    /// opening under p1, else (first cell only) on a portal neighbour's floor under p1.
+    /// </summary>
+    public Landing FindLanding(ref MoveQuery q, Hop hop)
+    {
+        if (--q.CellVisitsLeft < 0)
+        {
+            return Landing.Blocked(ResolveOutcome.Wall); // the call has visited as many cells as any real move needs
+        }
+
+        LandblockEntry entry = q.Entry;
+        CellSurface cell = entry.Cells[hop.Cell];
+        ReadOnlySpan<PortalShape> shapes = cell.PortalShapes;
+        int[] targets = entry.PortalTargets[hop.Cell];
+
+        int doorway = -1;
+        float doorwayT = float.MaxValue;
+        Vector3 wallNormal = default;
+        for (int k = 0; k < shapes.Length; k++)
+        {
+            if (shapes[k].Kind != PortalKind.Vertical || (targets[k] == hop.From && hop.From >= 0))
+            {
+                continue;
+            }
+
+            float t = shapes[k].CrossingFraction(q.P0, q.P1, q.Z, q.StepUp, out bool crossesPlane);
+            if (crossesPlane && t < 0f)
+            {
+                wallNormal = shapes[k].WallNormal; // crossed the doorway's plane beside its opening: its wall
+            }
+
+            if (t >= hop.TStart && t < doorwayT)
+            {
+                doorway = k;
+                doorwayT = t;
+            }
+        }
+
+        if (doorway >= 0)
+        {
+            Landing through = Pass(ref q, hop, targets[doorway], doorwayT, falling: false);
+            return through.Kind == Arrival.Nothing ? Landing.Blocked(ResolveOutcome.Wall) : through;
+        }
+
+        if (cell.TrySampleFloor(q.P1.X, q.P1.Y, q.Z, out float floorZ))
+        {
+            return Landing.OnFloor(hop.Cell, floorZ);
+        }
+
+        for (int k = 0; k < shapes.Length; k++)
+        {
+            PortalShape shape = shapes[k];
+            if (shape.Kind != PortalKind.Horizontal || (targets[k] == hop.From && hop.From >= 0) || !shape.ContainsXY(q.P1.X, q.P1.Y))
+            {
+                continue;
+            }
+
+            float planeZ = shape.PlaneZ(q.P1.X, q.P1.Y);
+            if (planeZ > q.Z + q.StepUp + PhysicsConstants.EdgeTolerance || (!hop.Falling && planeZ < q.Z - q.StepUp - PhysicsConstants.EdgeTolerance))
+            {
+                continue; // an opening overhead, or one this mover is not standing at
+            }
+
+            Landing through = Pass(ref q, hop, targets[k], hop.TStart, falling: true);
+            if (through.Kind != Arrival.Nothing)
+            {
+                return through;
+            }
+        }
+
+        if (hop.Depth == 0 && wallNormal == default)
+        {
+            // Portal geometry decided nothing: any portal neighbour with a floor under p1 takes the
+            // mover. Not when the move passed a doorway's plane beside its opening: that is the wall.
+            int best = -1;
+            float bestZ = 0f, bestDistance = float.MaxValue;
+            foreach (int target in targets)
+            {
+                if (target >= 0 && entry.Cells[target].TrySampleFloor(q.P1.X, q.P1.Y, q.Z, out float neighbourZ)
+                    && MathF.Abs(neighbourZ - q.Z) < bestDistance)
+                {
+                    best = target;
+                    bestZ = neighbourZ;
+                    bestDistance = MathF.Abs(neighbourZ - q.Z);
+                }
+            }
+
+            if (best >= 0)
+            {
+                return Landing.OnFloor(best, bestZ);
+            }
+        }
+
+        return Landing.Nothing(wallNormal);
+    }
+
+    /// <summary>The landing beyond a portal of cell <paramref name="hop"/>.Cell leading to <paramref name="target"/>, crossed at fraction <paramref name="t"/>.</summary>
+    private Landing Pass(ref MoveQuery q, Hop hop, int target, float t, bool falling)
+    {
+        if (target == LandblockEntry.MissingCell || hop.Depth >= PhysicsConstants.MaxPortalHops)
+        {
+            return Landing.Blocked(ResolveOutcome.Wall);
+        }
+
+        if (target == LandblockEntry.OutdoorTarget)
+        {
+            Vector2 local = q.P1;
+            int x = q.Entry.X, y = q.Entry.Y;
+            WorldFrame.Wrap(ref local.X, ref x);
+            WorldFrame.Wrap(ref local.Y, ref y);
+            LandblockEntry? land = registry.Get(x, y);
+            return land is null
+                ? Landing.Blocked(CellIds.IsInWorld(x, y) ? ResolveOutcome.UnloadedAhead : ResolveOutcome.EdgeOfWorld)
+                : Landing.OnTerrain(land, local, land.Terrain.SampleZUnchecked(local.X, local.Y));
+        }
+
+        return FindLanding(ref q, new Hop(target, hop.Cell, hop.Depth + 1, t, falling));
+    }
+}
+
+/// <summary>
+/// One cell of a portal search: the cell, the one it was entered from (−1 for the first), how deep,
+/// how far along the move its doorways count from, and whether the mover dropped in through an opening.
+/// </summary>
+internal readonly record struct Hop(int Cell, int From, int Depth, float TStart, bool Falling)
+{
+    /// <summary>The first cell of a move: the mover's own.</summary>
+    public static Hop Start(int cell, float tStart = 0f) => new(cell, -1, 0, tStart, false);
+}
+
+/// <summary>What a portal search arrived on.</summary>
+internal enum Arrival
+{
+    /// <summary>No surface found.</summary>
+    Nothing,
+
+    /// <summary>A wall, a missing cell or unloaded land is in the way.</summary>
+    Blocked,
+
+    /// <summary>On a cell's floor.</summary>
+    Floor,
+
+    /// <summary>On the terrain, through a portal to the outdoors.</summary>
+    Terrain,
+}
+
+/// <summary>The end of a portal search: a floor, the terrain beyond a door, or why there is none.</summary>
+internal readonly record struct Landing(Arrival Kind, int CellIndex, float Z, LandblockEntry? Land, Vector2 TerrainLocal, ResolveOutcome Refusal, Vector3 WallNormal)
+{
+    public static Landing Nothing(Vector3 wallNormal) => new(Arrival.Nothing, -1, 0f, null, default, ResolveOutcome.Wall, wallNormal);
+
+    public static Landing Blocked(ResolveOutcome why) => new(Arrival.Blocked, -1, 0f, null, default, why, default);
+
+    public static Landing OnFloor(int cellIndex, float z) => new(Arrival.Floor, cellIndex, z, null, default, ResolveOutcome.Moved, default);
+
+    public static Landing OnTerrain(LandblockEntry land, Vector2 local, float z) => new(Arrival.Terrain, -1, z, land, local, ResolveOutcome.Moved, default);
+}

@@ -1,0 +1,29 @@
+namespace AcDream.Core.Physics;
+
+/// <summary>What happened to a move: see <see cref="ResolveResult.Outcome"/>.</summary>
+public enum ResolveOutcome : byte
+{
+    /// <summary>The move was made (on the ground, or airborne with step down).</summary>
+    Moved = 0,
+
+    /// <summary>The land under the mover is not loaded: it is held where it is, on the ground.</summary>
+    Held,
+
+    /// <summary>Refused: the ground or floor ahead rises more than the step height.</summary>
+    StepTooHigh,
+
+    /// <summary>Refused (walkable slope): the terrain ahead is too steep to climb.</summary>
+    SlopeTooSteep,
+
+    /// <summary>Refused indoors: no floor and no portal ahead, a doorway's wall, or a portal to a cell the engine does not have.</summary>
+    Wall,
+
+    /// <summary>Refused outdoors (doors only): a building's outer wall; only its doors let a mover in.</summary>
+    OuterWall,
+
+    /// <summary>Refused: the land ahead is not loaded.</summary>
+    UnloadedAhead,
+
+    /// <summary>Refused: the move would leave the world.</summary>
+    EdgeOfWorld,
+}
