@@ -29,8 +29,8 @@ public sealed class CellSurface
     /// <summary>The EnvCell's dat id (e.g., 0xA9B40100).</summary>
     public uint CellId { get; }
 
-    /// <summary>The cell's world-space origin (from EnvCell.Position.Origin).</summary>
-    /// <remarks>Landblock-local metres, as stored in the dat; the engine adds the landblock's offset.</remarks>
+    /// <summary>The cell's origin (from EnvCell.Position.Origin), landblock-local metres.</summary>
+    /// <remarks>As stored in the dat; <see cref="PhysicsEngine.ToWorld"/> adds the landblock's offset.</remarks>
     public Vector3 Origin { get; }
 
     /// <summary>Portal connections to adjacent cells.</summary>
@@ -126,7 +126,7 @@ public sealed class CellSurface
     internal ReadOnlySpan<PortalShape> PortalShapes => _portalShapes;
 
     /// <summary>
-    /// Project (worldX, worldY) onto this cell's floor polygons and
+    /// Project (worldX, worldY), landblock-local metres despite the names, onto this cell's floor polygons and
     /// return the Z height at that point. Returns null if the XY
     /// doesn't fall within any floor polygon (the entity isn't over
     /// this cell's floor).
