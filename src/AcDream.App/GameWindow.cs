@@ -32,8 +32,6 @@ public sealed class GameWindow : IDisposable
     private readonly ILandblockSource _source;
     private readonly float[] _heightTable;
     private readonly Action<string> _log;
-    private readonly int _originX;
-    private readonly int _originY;
 
     // Guarded by _streamingLock: the loader's inbox and outbox, and what is in flight.
     private readonly object _streamingLock = new();
@@ -71,8 +69,6 @@ public sealed class GameWindow : IDisposable
         _source = source;
         _heightTable = (float[])heightTable.Clone();
         _log = log ?? (_ => { });
-        _originX = (int)(centerLandblockId >> 24);
-        _originY = (int)((centerLandblockId >> 16) & 0xFF);
         _loader = new Thread(LoaderLoop) { IsBackground = true, Name = "landblock loader" };
         _loader.Start();
     }
@@ -94,12 +90,12 @@ public sealed class GameWindow : IDisposable
 
     /// <summary>
     /// The landblock (<c>0xXXYYFFFF</c>) under a world position; positions off the world (however far,
-    /// infinities included) clamp to the nearest edge landblock.
+    /// infinities included) clamp to the nearest edge landblock. The engine's
+    /// <see cref="PhysicsEngine.LandblockAt"/>.
     /// </summary>
     /// <param name="worldPosition">World metres (Z is ignored).</param>
     /// <exception cref="ArgumentException">X or Y is NaN.</exception>
-    public uint LandblockAt(Vector3 worldPosition) =>
-        ((uint)LandblockIndex(_originX, worldPosition.X) << 24) | ((uint)LandblockIndex(_originY, worldPosition.Y) << 16) | 0xFFFF;
+    public uint LandblockAt(Vector3 worldPosition) => Physics.LandblockAt(worldPosition);
 
     /// <summary>
     /// The frame loop's streaming step: moves the window to the observer, registers the loads that
@@ -118,7 +114,7 @@ public sealed class GameWindow : IDisposable
     {
         uint center = LandblockAt(observerWorldPosition);
         _frame++;
-        int cx = (int)(center >> 24), cy = (int)((center >> 16) & 0xFF);
+        int cx = CellIds.LandblockX(center), cy = CellIds.LandblockY(center);
         _window.Clear();
         for (int dx = -StreamingRadius; dx <= StreamingRadius; dx++)
         {
@@ -127,7 +123,7 @@ public sealed class GameWindow : IDisposable
                 int x = cx + dx, y = cy + dy;
                 if (x >= 0 && y >= 0 && x <= PhysicsConstants.MaxLandblockIndex && y <= PhysicsConstants.MaxLandblockIndex)
                 {
-                    _window.Add(((uint)x << 24) | ((uint)y << 16) | 0xFFFF);
+                    _window.Add(CellIds.Landblock(x, y));
                 }
             }
         }
@@ -278,9 +274,9 @@ public sealed class GameWindow : IDisposable
     /// <returns>False, with the reason, when the landblock itself cannot be registered; the engine is then unchanged.</returns>
     internal bool ApplyLoadedTerrainLocked(uint landblockId, LoadedLandblock loaded, out string? error)
     {
-        uint id = (landblockId & 0xFFFF0000u) | 0xFFFF;
+        uint id = CellIds.LandblockOf(landblockId);
         error = null;
-        if (loaded.LandBlock is null || ((loaded.LandBlock.Id & 0xFFFF0000u) | 0xFFFF) != id)
+        if (loaded.LandBlock is null || CellIds.LandblockOf(loaded.LandBlock.Id) != id)
         {
             error = $"the source returned landblock 0x{loaded.LandBlock?.Id ?? 0:X8}";
             return false;
@@ -334,7 +330,7 @@ public sealed class GameWindow : IDisposable
     /// <summary>The unload path: removes a landblock from the engine (nothing happens if it is not registered).</summary>
     internal void UnloadLandblockLocked(uint landblockId)
     {
-        uint id = (landblockId & 0xFFFF0000u) | 0xFFFF;
+        uint id = CellIds.LandblockOf(landblockId);
         Physics.RemoveLandblock(id);
         if (_loaded.Remove(id))
         {
@@ -350,7 +346,7 @@ public sealed class GameWindow : IDisposable
             return "the cell is null";
         }
 
-        if ((envCell.Id & 0xFFFF0000u) != (landblockId & 0xFFFF0000u))
+        if (CellIds.LandblockOf(envCell.Id) != CellIds.LandblockOf(landblockId))
         {
             return "the cell belongs to another landblock";
         }
@@ -382,21 +378,9 @@ public sealed class GameWindow : IDisposable
         }
     }
 
-    /// <summary>The landblock index along one axis, in double and clamped to the world before it becomes an int (a float's floor(x / 192) overflows an int).</summary>
-    private static int LandblockIndex(int origin, float coordinate)
-    {
-        if (float.IsNaN(coordinate))
-        {
-            throw new ArgumentException("the world position has a NaN coordinate; it is in no landblock.", "worldPosition");
-        }
-
-        double index = origin + Math.Floor(coordinate / (double)PhysicsConstants.LandblockSize);
-        return (int)Math.Clamp(index, 0, PhysicsConstants.MaxLandblockIndex);
-    }
-
     private static int DistanceSquared(uint id, int cx, int cy)
     {
-        int dx = (int)(id >> 24) - cx, dy = (int)((id >> 16) & 0xFF) - cy;
+        int dx = CellIds.LandblockX(id) - cx, dy = CellIds.LandblockY(id) - cy;
         return (dx * dx) + (dy * dy);
     }
 

@@ -19,17 +19,17 @@ public sealed class MainJobTests : IDisposable
         WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
 
         var visits = record.CellVisits();
-        var indoor = visits.Select(v => (v.CellId & 0xFFFF) >= 0x0100 ? v.CellId : 0u)
+        var indoor = visits.Select(v => CellIds.IsIndoor(v.CellId) ? v.CellId : 0u)
             .Aggregate(new List<uint>(), (list, c) => { if (list.Count == 0 || list[^1] != c) { list.Add(c); } return list; });
         indoor.Should().Equal(
             [0u, 0xA9B40145u, 0xA9B40143u, 0xA9B40145u, 0u, 0xA9B40170u, 0xA9B40171u, 0xA9B40173u, 0xA9B40172u, 0xA9B40173u, 0xA9B40171u, 0xA9B40174u],
             $"cells visited (0 = outdoors): {string.Join(" ", visits.Select(v => $"{v.Frame}:{v.CellId:X8}"))}");
-        visits.Should().Contain(v => (v.CellId >> 16) == 0xA8B4, "the walk starts west of the seam");
+        visits.Should().Contain(v => CellIds.LandblockOf(v.CellId) == 0xA8B4FFFFu, "the walk starts west of the seam");
         record.Final.CellId.Should().Be(0xA9B40174u);
         record.Final.IsOnGround.Should().BeTrue();
         record.Final.Position.Z.Should().BeApproximately(90f, 1e-3f, "the cellar floor");
-        record.RefusalCount(RefusalReason.StepTooHigh).Should().BeGreaterThan(0, "the needle and the 1 m step refuse moves");
-        record.RefusalCount(RefusalReason.Wall).Should().BeGreaterThan(0, "the main room's east wall refuses moves");
+        record.RefusalCount(ResolveOutcome.SlopeTooSteep).Should().BeGreaterThan(0, "the needle refuses moves");
+        record.RefusalCount(ResolveOutcome.Wall).Should().BeGreaterThan(0, "the main room's east wall and the doorway wall under 0x0142 refuse moves");
         record.Scene.Effects.Should().Be(MovementOptions.Player, "the default scene uses the effects a player uses");
         record.Drops.Should().BeEmpty("with step down on, the shaft is a fall, not a one-frame drop");
         Fall fall = record.Falls().Should().ContainSingle().Subject;
@@ -41,6 +41,34 @@ public sealed class MainJobTests : IDisposable
         record.Streaming.Count(e => e.Loaded).Should().Be(12, "9 at the start and 3 after the seam");
         record.Streaming.Count(e => !e.Loaded).Should().Be(3);
         record.Legs.Should().HaveCount(19);
+    }
+
+    [Fact]
+    public void SceneRunner_DefaultScene_RefusalsAreTheEnginesOutcomesPerLegAndInTheSummary()
+    {
+        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
+        string Refusals(int leg) => string.Join(", ", record.Legs[leg - 1].Refusals.Select(r => $"{r.Key}={r.Value}"));
+
+        // Leg 2 runs at the rock needle: with the player's walkable slope the engine refuses it as too steep.
+        LegResult needle = record.Legs[1];
+        needle.Leg.Name.Should().Contain("rock needle");
+        needle.Reached.Should().BeFalse();
+        needle.Refusals.Keys.Should().Equal([ResolveOutcome.SlopeTooSteep], $"leg 2 refusals: {Refusals(2)}");
+        needle.Refusals[ResolveOutcome.SlopeTooSteep].Should().BeGreaterThan(50, $"the leg runs 4 s into the slope; {Refusals(2)}");
+        record.Samples.Where(s => s.Frame >= needle.FirstFrame && s.Frame <= needle.LastFrame && s.Refusal is not null)
+            .Should().OnlyContain(s => s.Refusal == ResolveOutcome.SlopeTooSteep);
+        record.Legs[7].Refusals.Keys.Should().Equal([ResolveOutcome.Wall], $"leg 8, the main room's east wall: {Refusals(8)}");
+        record.Legs[8].Refusals.Keys.Should().Equal([ResolveOutcome.Wall], $"leg 9, the doorway to 0x0142 opens 1 m up: its wall; {Refusals(9)}");
+        record.RefusalCount(ResolveOutcome.StepTooHigh).Should().Be(0);
+        record.RefusalCount(ResolveOutcome.SlopeTooSteep).Should().Be(needle.Refusals[ResolveOutcome.SlopeTooSteep], "only the needle is too steep");
+
+        string summary = WalkReport.Format(record, "walk.svg");
+        string[] lines = summary.Split(System.Environment.NewLine);
+        lines.Should().ContainSingle(l => l.StartsWith("   2. run at the rock needle", StringComparison.Ordinal))
+            .Which.Should().EndWith($"; refused {needle.Refusals[ResolveOutcome.SlopeTooSteep]} × slope too steep", summary);
+        lines.Should().ContainSingle(l => l.StartsWith("   8. ", StringComparison.Ordinal)).Which.Should().EndWith($"; refused {record.Legs[7].Refusals[ResolveOutcome.Wall]} × wall");
+        lines.Should().ContainSingle(l => l.StartsWith("Refused moves: ", StringComparison.Ordinal)).Which.Should().Be(
+            $"Refused moves: 0 step too high (> 0.5 m), {record.RefusalCount(ResolveOutcome.SlopeTooSteep)} slope too steep, {record.RefusalCount(ResolveOutcome.Wall)} wall, 0 outer wall, 0 unloaded land ahead, 0 edge of the world.");
     }
 
     [Fact]

@@ -13,6 +13,15 @@ public class PlayerMovementModeTests
 
     private static PhysicsEngine Flat(byte index) => Engine(Heights((_, _) => index));
 
+    /// <summary>Holtburg's landblock with its terrain and the 22 real cells, centred on it.</summary>
+    private static PhysicsEngine HoltburgEngine()
+    {
+        var world = new HoltburgWorld();
+        var engine = new PhysicsEngine(HoltburgWorld.Holtburg);
+        engine.AddLandblock(HoltburgWorld.Holtburg, world.Terrain(HoltburgWorld.Holtburg), world.CellSurfaces);
+        return engine;
+    }
+
     [Theory]
     [InlineData(false, PlayerMovementMode.WalkSpeed)]
     [InlineData(true, PlayerMovementMode.RunSpeed)]
@@ -22,7 +31,7 @@ public class PlayerMovementModeTests
 
         for (int i = 0; i < 30; i++)
         {
-            mode.Update(new MovementIntent(1f, 0f, 0f, run), Frame).RejectedSteps.Should().Be(0, $"frame {i}");
+            mode.Update(new MovementIntent(1f, 0f, 0f, run), Frame).RefusedSteps.Should().Be(0, $"frame {i}");
         }
 
         mode.Position.X.Should().BeApproximately(96f, 1e-4f, "heading 0 is north");
@@ -61,16 +70,25 @@ public class PlayerMovementModeTests
         var runner = new PlayerMovementMode(engine, new Vector3(20f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
         var walker = new PlayerMovementMode(engine, new Vector3(20f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
         int refused = 0;
+        MovementFrame last = default;
 
         for (int i = 0; i < 90; i++)
         {
-            refused += runner.Update(new MovementIntent(1f, 0f, 0f, true), Frame).RejectedSteps;
-            walker.Update(new MovementIntent(1f, 0f, 0f, false), Frame).RejectedSteps.Should().Be(0, $"frame {i}: walking climbs");
+            last = runner.Update(new MovementIntent(1f, 0f, 0f, true), Frame);
+            refused += last.RefusedSteps;
+            MovementFrame walked = walker.Update(new MovementIntent(1f, 0f, 0f, false), Frame);
+            walked.RefusedSteps.Should().Be(0, $"frame {i}: walking climbs");
+            walked.LastRefusal.Should().BeNull($"frame {i}: nothing refused");
         }
 
         runner.Position.X.Should().BeInRange(23.8f, 24f, "the runner stops at the foot of the slope");
         runner.Position.Z.Should().Be(0f);
         refused.Should().BeGreaterThan(50, "every later running step is refused");
+        last.LastRefusal.Should().Be(ResolveOutcome.StepTooHigh, "the engine's reason: the rise per step is over 0.5 m (no walkable-slope effect)");
+        Vector3 slope = Vector3.Normalize(new Vector3(-100f, 0f, 24f));
+        last.LastRefusalNormal.X.Should().BeApproximately(slope.X, 1e-4f, $"the slope's normal, got {last.LastRefusalNormal}");
+        last.LastRefusalNormal.Y.Should().BeApproximately(0f, 1e-4f, $"got {last.LastRefusalNormal}");
+        last.LastRefusalNormal.Z.Should().BeApproximately(slope.Z, 1e-4f, $"got {last.LastRefusalNormal}");
         walker.Position.X.Should().BeApproximately(20f + (3f * PlayerMovementMode.WalkSpeed), 1e-3f);
         walker.Position.Z.Should().BeApproximately((walker.Position.X - 24f) * 100f / 24f, 1e-3f, "the walker is on the slope");
     }
@@ -90,30 +108,65 @@ public class PlayerMovementModeTests
 
         frame.Steps.Should().Be(10, "1 s in steps of at most 0.1 s");
         whole.Position.Should().Be(split.Position, "a long frame is exactly its steps");
-        frame.RejectedSteps.Should().BeGreaterThan(0, "0.2 m steps rise 0.83 m on the slope: refused");
+        frame.RefusedSteps.Should().BeGreaterThan(0, "0.2 m steps rise 0.83 m on the slope: refused");
         whole.Position.X.Should().BeLessThan(24.2f, $"the long frame did not jump up the slope; at {whole.Position}");
         whole.Update(Idle, 0.25f).Steps.Should().Be(3, "0.25 s is three steps of 0.083 s");
     }
 
-    [Fact]
-    public void Update_IndoorStepOfOneMetre_IsRefused()
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)]
+    public void Update_IndoorStepOfOneMetre_ReportsTheEngineDoorwayWallAndItsNormal(bool player)
     {
-        var world = new HoltburgWorld();
-        var engine = new PhysicsEngine(HoltburgWorld.Holtburg);
-        engine.AddLandblock(HoltburgWorld.Holtburg, world.Terrain(HoltburgWorld.Holtburg), world.Cells.Select(c => new CellSurface(c.CellId, c.EnvCell, c.CellStruct)).ToList());
-        // The cottage's main room 0x0143 (94 m) meets the raised passage 0x0142 (95 m) at y = 13.1.
-        var mode = new PlayerMovementMode(engine, new Vector3(139f, 12.5f, 94f), 0xA9B40143u, 0f);
+        PhysicsEngine engine = HoltburgEngine();
+        // The cottage's main room 0x0143 (94 m) meets the raised passage 0x0142 (95 m) at y = 13.1:
+        // the doorway's opening starts 1 m up, so walking north the mover meets the wall under it.
+        MovementOptions effects = player ? MovementOptions.Player : default;
+        var mode = new PlayerMovementMode(engine, new Vector3(139f, 12.5f, 94f), 0xA9B40143u, 0f, effects);
+        var walk = new MovementIntent(1f, 0f, 0f, false);
 
         int refused = 0;
+        MovementFrame last = default;
         for (int i = 0; i < 30; i++)
         {
-            refused += mode.Update(new MovementIntent(1f, 0f, 0f, false), Frame).RejectedSteps;
+            last = mode.Update(walk, Frame);
+            refused += last.RefusedSteps;
         }
 
         mode.CellId.Should().Be(0xA9B40143u);
         mode.Position.Z.Should().Be(94f);
-        mode.Position.Y.Should().BeLessThanOrEqualTo(13.1f, "stopped at the 1 m step");
+        mode.Position.Y.Should().BeApproximately(13.1f, 1e-3f, "stopped at the doorway's plane");
         refused.Should().BeGreaterThan(20);
+        last.LastRefusal.Should().Be(ResolveOutcome.Wall, $"the engine's reason; frame {last}");
+        last.LastRefusalNormal.X.Should().BeApproximately(0f, 1e-5f, $"the doorway wall faces south, towards the mover: {last.LastRefusalNormal}");
+        last.LastRefusalNormal.Y.Should().BeApproximately(-1f, 1e-5f, $"{last.LastRefusalNormal}");
+        last.LastRefusalNormal.Z.Should().BeApproximately(0f, 1e-5f, $"{last.LastRefusalNormal}");
+
+        // Exactly what the engine answers for the same step.
+        ResolveResult engineSays = engine.Resolve(mode.Position, mode.CellId, new Vector3(0f, PlayerMovementMode.WalkSpeed * Frame, 0f), PlayerMovementMode.StepUpHeight, effects);
+        engineSays.IsRefused.Should().BeTrue($"{engineSays}");
+        last.LastRefusal.Should().Be(engineSays.Outcome);
+        last.LastRefusalNormal.Should().Be(engineSays.SurfaceNormal);
+    }
+
+    [Fact]
+    public void Update_IntoTheMainRoomsEastWall_ReportsAWallWithNoSurfaceNormal()
+    {
+        // No floor and no doorway east of x = 142.1 in 0x0143: a floor edge, whose refusal names no surface.
+        var mode = new PlayerMovementMode(HoltburgEngine(), new Vector3(139f, 10f, 94f), 0xA9B40143u, MathF.PI / 2f, MovementOptions.Player);
+
+        MovementFrame last = default;
+        int refused = 0;
+        for (int i = 0; i < 90; i++)
+        {
+            last = mode.Update(new MovementIntent(1f, 0f, 0f, false), Frame);
+            refused += last.RefusedSteps;
+        }
+
+        mode.Position.X.Should().BeInRange(141.9f, 142.1f, "stopped at the east wall");
+        refused.Should().BeGreaterThan(30, "walking 6 m (90 frames) towards a wall 3.1 m (47 frames) away");
+        last.LastRefusal.Should().Be(ResolveOutcome.Wall);
+        last.LastRefusalNormal.Should().Be(Vector3.Zero, "the engine names no surface at a floor edge");
     }
 
     [Fact]

@@ -107,7 +107,7 @@ public sealed class PlayerMovementMode
     /// </remarks>
     /// <param name="intent">The player's intent, held for the whole frame.</param>
     /// <param name="frameSeconds">Frame time, seconds, ≥ 0 (fixed or variable); more than <see cref="MaxFrameSeconds"/> counts as <see cref="MaxFrameSeconds"/>.</param>
-    /// <returns>How many steps ran and which were refused.</returns>
+    /// <returns>How many steps ran, how many the engine refused, and the engine's outcome and surface normal of the last refusal.</returns>
     /// <exception cref="ArgumentOutOfRangeException">The frame time is negative or not finite.</exception>
     public MovementFrame Update(MovementIntent intent, float frameSeconds)
     {
@@ -124,28 +124,25 @@ public sealed class PlayerMovementMode
         frameSeconds = MathF.Min(frameSeconds, MaxFrameSeconds);
         int steps = Math.Max(1, (int)MathF.Ceiling(frameSeconds / MaxStepSeconds));
         float dt = frameSeconds / steps;
-        int rejected = 0;
-        Vector3 rejectedFrom = default, rejectedDelta = default;
-        uint rejectedCell = 0;
+        int refused = 0;
+        ResolveOutcome? lastRefusal = null;
+        Vector3 lastNormal = default;
         for (int i = 0; i < steps; i++)
         {
-            Vector3 from = Position;
-            uint fromCell = CellId;
-            Vector3 delta = Step(intent, dt);
-            if (delta != Vector3.Zero && Position.X == from.X && Position.Y == from.Y)
+            ResolveResult result = Step(intent, dt);
+            if (result.IsRefused)
             {
-                rejected++;
-                rejectedFrom = from;
-                rejectedCell = fromCell;
-                rejectedDelta = delta;
+                refused++;
+                lastRefusal = result.Outcome;
+                lastNormal = result.SurfaceNormal;
             }
         }
 
-        return new MovementFrame(steps, rejected, rejectedFrom, rejectedCell, rejectedDelta);
+        return new MovementFrame(steps, refused, lastRefusal, lastNormal);
     }
 
-    /// <summary>One step of <paramref name="dt"/> seconds; returns the horizontal move asked for.</summary>
-    private Vector3 Step(MovementIntent intent, float dt)
+    /// <summary>One step of <paramref name="dt"/> seconds; returns the engine's answer.</summary>
+    private ResolveResult Step(MovementIntent intent, float dt)
     {
         Heading += Math.Clamp(intent.Turn, -1f, 1f) * TurnRate * dt;
         (float sin, float cos) = MathF.SinCos(Heading);
@@ -176,7 +173,7 @@ public sealed class PlayerMovementMode
             VerticalSpeed = 0f;
         }
 
-        return delta;
+        return result;
     }
 
     private static float WrapAngle(float radians)

@@ -22,7 +22,7 @@ internal static class SceneReader
     public const float MaxLegSeconds = 600f;
 
     /// <summary>How far from 0xA9B4's corner a start may be, metres: the 3 × 3 landblocks around Holtburg and one more ring (the world is bigger, the walk is not).</summary>
-    public const float MaxStartDistance = 2 * 192f;
+    public const float MaxStartDistance = 2 * PhysicsConstants.LandblockSize;
 
     private static readonly string[] SceneFields = ["name", "start", "legs", "notes", "effects"];
     private static readonly string[] EffectFields = ["stepDownHeight", "walkableSlope", "sweepStepLength", "doorsOnly"];

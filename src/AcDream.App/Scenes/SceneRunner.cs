@@ -19,6 +19,7 @@ internal static class SceneRunner
     /// <summary>A point leg ends when the mover is this close to its point, metres.</summary>
     public const float ArrivalDistance = 0.01f;
 
+    /// <summary>Longest wait for one frame's landblock loads before the run gives up: 30 s.</summary>
     private static readonly TimeSpan LoadTimeout = TimeSpan.FromSeconds(30);
 
     /// <summary>Runs <paramref name="scene"/>; stops after <paramref name="maxFrames"/> frames if given.</summary>
@@ -37,22 +38,21 @@ internal static class SceneRunner
         window.LandblockUnloaded += id => streaming.Add(new StreamingEvent(frame, id, false));
         PhysicsEngine engine = window.Physics;
 
-        Vector3 start = StartOnGround(scene.Start, window, world, out uint startCell);
-        window.UpdateStreaming(start);
+        var startXY = new Vector3(scene.Start, 0f);
+        window.UpdateStreaming(startXY);
         Wait(window);
-        window.UpdateStreaming(start);
+        window.UpdateStreaming(startXY);
+        ResolveResult start = StartOnGround(startXY, engine);
 
-        var mode = new PlayerMovementMode(engine, start, startCell, scene.StartHeadingDegrees * (MathF.PI / 180f), scene.Effects);
-        samples.Add(new FrameSample(0, start, startCell, true, null));
-        List<CellSurface> indoor = world.Cells.Select(c => new CellSurface(c.CellId, c.EnvCell, c.CellStruct)).ToList();
-        Vector3 indoorOrigin = engine.GetLandblockOrigin(HoltburgWorld.Holtburg);
+        var mode = new PlayerMovementMode(engine, start.Position, start.CellId, scene.StartHeadingDegrees * (MathF.PI / 180f), scene.Effects);
+        samples.Add(new FrameSample(0, start.Position, start.CellId, start.IsOnGround, null));
 
         bool truncated = false;
         foreach (SceneLeg leg in scene.Legs)
         {
             int first = frame + 1;
             int limit = (int)MathF.Round(leg.Seconds * FramesPerSecond);
-            var refusals = new Dictionary<RefusalReason, int>();
+            var refusals = new Dictionary<ResolveOutcome, int>();
             bool reached = false;
             for (int n = 0; ; n++)
             {
@@ -99,14 +99,12 @@ internal static class SceneRunner
                 Wait(window);
                 FrameSample before = samples[^1];
                 MovementFrame moved = mode.Update(intent, dt);
-                RefusalReason? refusal = null;
-                if (moved.RejectedSteps > 0)
+                if (moved.LastRefusal is ResolveOutcome refusal)
                 {
-                    refusal = Classify(moved, window, indoor, indoorOrigin);
-                    refusals[refusal.Value] = refusals.GetValueOrDefault(refusal.Value) + 1;
+                    refusals[refusal] = refusals.GetValueOrDefault(refusal) + 1;
                 }
 
-                var sample = new FrameSample(frame, mode.Position, mode.CellId, mode.IsOnGround, refusal);
+                var sample = new FrameSample(frame, mode.Position, mode.CellId, mode.IsOnGround, moved.LastRefusal);
                 if (before.IsOnGround && sample.IsOnGround && before.Position.Z - sample.Position.Z > PlayerMovementMode.StepUpHeight)
                 {
                     drops.Add(new Drop(frame, before.Position.Z, before.CellId, sample.Position.Z, sample.CellId));
@@ -125,15 +123,18 @@ internal static class SceneRunner
         return new WalkRecord(scene, samples, legs, streaming, drops, warnings, truncated);
     }
 
-    /// <summary>The start on the terrain, and its outdoor cell id.</summary>
-    private static Vector3 StartOnGround(Vector2 start, GameWindow window, HoltburgWorld world, out uint cellId)
+    /// <summary>
+    /// The start on the terrain, as the engine has it: the ground's Z under the start, then the cell
+    /// the engine puts a mover standing there in (a zero move; any outdoor id, 0 too, is recomputed).
+    /// </summary>
+    private static ResolveResult StartOnGround(Vector3 start, PhysicsEngine engine)
     {
-        uint landblock = window.LandblockAt(new Vector3(start, 0f));
-        Vector3 origin = window.Physics.GetLandblockOrigin(landblock);
-        TerrainSurface terrain = world.Terrain(landblock);
-        float x = start.X - origin.X, y = start.Y - origin.Y;
-        cellId = (landblock & 0xFFFF0000u) | terrain.ComputeOutdoorCellId(x, y);
-        return new Vector3(start, terrain.SampleZ(x, y));
+        if (!engine.TryGetGround(start, 0u, out float groundZ, out _))
+        {
+            throw new InvalidOperationException($"the start ({start.X}, {start.Y}) is on land that did not load (landblock 0x{engine.LandblockAt(start):X8}).");
+        }
+
+        return engine.Resolve(start with { Z = groundZ }, 0u, Vector3.Zero, PlayerMovementMode.StepUpHeight);
     }
 
     private static void Wait(GameWindow window)
@@ -142,37 +143,5 @@ internal static class SceneRunner
         {
             throw new TimeoutException($"the landblock loader did not finish within {LoadTimeout.TotalSeconds} s.");
         }
-    }
-
-    /// <summary>
-    /// Why a move was refused. The engine returns only the unchanged position, so the host looks at
-    /// what is ahead: unloaded land; outdoors, the terrain rising too fast (the only outdoor refusal);
-    /// indoors, a floor ahead more than the step height up (but less than a storey), else a wall.
-    /// </summary>
-    private static RefusalReason Classify(MovementFrame moved, GameWindow window, List<CellSurface> indoor, Vector3 indoorOrigin)
-    {
-        Vector3 from = moved.RejectedFrom, target = from + moved.RejectedDelta;
-        if (!window.Physics.ContainsLandblock(window.LandblockAt(from)) || !window.Physics.ContainsLandblock(window.LandblockAt(target)))
-        {
-            return RefusalReason.UnloadedLand;
-        }
-
-        if ((moved.RejectedCellId & 0xFFFF) < 0x0100)
-        {
-            return RefusalReason.StepTooHigh;
-        }
-
-        Vector3 local = target - indoorOrigin;
-        foreach (CellSurface cell in indoor)
-        {
-            if ((cell.CellId & 0xFFFF0000u) == (moved.RejectedCellId & 0xFFFF0000u)
-                && cell.SampleFloorZ(local.X, local.Y, from.Z) is float z
-                && z - from.Z > PlayerMovementMode.StepUpHeight && z - from.Z < 2.5f)
-            {
-                return RefusalReason.StepTooHigh;
-            }
-        }
-
-        return RefusalReason.Wall;
     }
 }

@@ -1,35 +1,23 @@
 using System.Numerics;
+using AcDream.Core.Physics;
 
 namespace AcDream.App.Scenes;
-
-/// <summary>Why the engine refused a move, as the host infers it (the engine only keeps the mover in place).</summary>
-internal enum RefusalReason
-{
-    /// <summary>The ground or floor ahead rises more than the step height.</summary>
-    StepTooHigh,
-
-    /// <summary>Indoors, no floor or doorway ahead: a wall.</summary>
-    Wall,
-
-    /// <summary>The land under or ahead of the mover is not loaded.</summary>
-    UnloadedLand,
-}
 
 /// <summary>The mover after one frame.</summary>
 /// <param name="Frame">Frame number; 0 is the start.</param>
 /// <param name="Position">Feet, world metres.</param>
 /// <param name="CellId">Cell id, <c>0xXXYYCCCC</c>.</param>
 /// <param name="IsOnGround">On terrain or a floor.</param>
-/// <param name="Refusal">Why this frame's move was refused, if it was.</param>
-internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, RefusalReason? Refusal);
+/// <param name="Refusal">The engine's outcome of this frame's last refused step; null when none was refused.</param>
+internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal);
 
 /// <summary>How a leg ended.</summary>
 /// <param name="Leg">The leg.</param>
 /// <param name="FirstFrame">First frame of the leg.</param>
 /// <param name="LastFrame">Last frame of the leg (FirstFrame − 1 when it took none).</param>
 /// <param name="Reached">Point leg: whether the point was reached; intent leg: whether it ran its full time.</param>
-/// <param name="Refusals">Refused moves during the leg, by reason.</param>
-internal sealed record LegResult(SceneLeg Leg, int FirstFrame, int LastFrame, bool Reached, IReadOnlyDictionary<RefusalReason, int> Refusals);
+/// <param name="Refusals">Frames with a refused move during the leg, by the engine's outcome.</param>
+internal sealed record LegResult(SceneLeg Leg, int FirstFrame, int LastFrame, bool Reached, IReadOnlyDictionary<ResolveOutcome, int> Refusals);
 
 /// <summary>A landblock registered in or removed from the engine.</summary>
 internal readonly record struct StreamingEvent(int Frame, uint LandblockId, bool Loaded);
@@ -92,8 +80,8 @@ internal sealed record WalkRecord(
         return falls;
     }
 
-    /// <summary>Refused moves over the whole walk.</summary>
-    public int RefusalCount(RefusalReason reason) => Samples.Count(s => s.Refusal == reason);
+    /// <summary>Frames over the whole walk whose move the engine refused with <paramref name="outcome"/>.</summary>
+    public int RefusalCount(ResolveOutcome outcome) => Samples.Count(s => s.Refusal == outcome);
 
     /// <summary>The cells in the order visited, each with the frame it was entered (consecutive repeats collapsed).</summary>
     public IReadOnlyList<(int Frame, uint CellId)> CellVisits()

@@ -25,11 +25,11 @@ internal static class WalkReport
         for (int i = 0; i < visits.Count; i++)
         {
             (int frame, uint cell) = visits[i];
-            if ((cell & 0xFFFF) < 0x0100)
+            if (!CellIds.IsIndoor(cell))
             {
                 // A run of outdoor cells is one line.
                 int j = i;
-                while (j + 1 < visits.Count && (visits[j + 1].CellId & 0xFFFF) < 0x0100)
+                while (j + 1 < visits.Count && !CellIds.IsIndoor(visits[j + 1].CellId))
                 {
                     j++;
                 }
@@ -55,7 +55,7 @@ internal static class WalkReport
         }
 
         text.AppendLine();
-        Line($"Refused moves: {record.RefusalCount(RefusalReason.StepTooHigh)} step too high, {record.RefusalCount(RefusalReason.Wall)} wall, {record.RefusalCount(RefusalReason.UnloadedLand)} unloaded land.");
+        Line($"Refused moves: {string.Join(", ", Refusals.Select(o => $"{record.RefusalCount(o)} {Describe(o)}"))}.");
         Line($"Airborne: {record.AirborneFrames} frames.");
         foreach (Fall fall in record.Falls())
         {
@@ -77,8 +77,8 @@ internal static class WalkReport
         Line($"Landblocks: {loaded} loaded, {unloaded} unloaded (window {2 * GameWindow.StreamingRadius + 1} x {2 * GameWindow.StreamingRadius + 1} around the mover).");
         foreach (IGrouping<int, StreamingEvent> group in record.Streaming.GroupBy(e => e.Frame))
         {
-            string @in = string.Join(" ", group.Where(e => e.Loaded).Select(e => $"{e.LandblockId >> 16:X4}"));
-            string @out = string.Join(" ", group.Where(e => !e.Loaded).Select(e => $"{e.LandblockId >> 16:X4}"));
+            string @in = string.Join(" ", group.Where(e => e.Loaded).Select(e => Landblock(e.LandblockId)));
+            string @out = string.Join(" ", group.Where(e => !e.Loaded).Select(e => Landblock(e.LandblockId)));
             Line($"  frame {group.Key,5}: {(@in.Length > 0 ? $"loaded {@in}" : "")}{(@in.Length > 0 && @out.Length > 0 ? "; " : "")}{(@out.Length > 0 ? $"unloaded {@out}" : "")}");
         }
 
@@ -99,7 +99,7 @@ internal static class WalkReport
         return text.ToString();
     }
 
-    /// <summary>Short text for a refusal reason.</summary>
+    /// <summary>Short text for the opt-in effects a scene uses.</summary>
     private static string DescribeEffects(MovementOptions effects)
     {
         var on = new List<string>();
@@ -126,20 +126,35 @@ internal static class WalkReport
         return on.Count == 0 ? "none (the spec's literal engine)" : string.Join(", ", on);
     }
 
-    public static string Describe(RefusalReason reason) => reason switch
+    /// <summary>Short text for one of the engine's outcomes, 1:1 (the engine's reason, not a guess).</summary>
+    public static string Describe(ResolveOutcome outcome) => outcome switch
     {
-        RefusalReason.StepTooHigh => $"step too high (> {PlayerMovementMode.StepUpHeight} m)",
-        RefusalReason.Wall => "wall",
-        _ => "unloaded land",
+        ResolveOutcome.StepTooHigh => FormattableString.Invariant($"step too high (> {PlayerMovementMode.StepUpHeight} m)"),
+        ResolveOutcome.SlopeTooSteep => "slope too steep",
+        ResolveOutcome.Wall => "wall",
+        ResolveOutcome.OuterWall => "outer wall",
+        ResolveOutcome.UnloadedAhead => "unloaded land ahead",
+        ResolveOutcome.EdgeOfWorld => "edge of the world",
+        ResolveOutcome.Moved => "moved",
+        ResolveOutcome.Held => "held (land not loaded)",
+        _ => outcome.ToString(),
     };
+
+    /// <summary>The engine's outcomes that are refusals (<see cref="ResolveResult.IsRefused"/>), in the engine's order.</summary>
+    private static IEnumerable<ResolveOutcome> Refusals =>
+        Enum.GetValues<ResolveOutcome>().Where(o => (default(ResolveResult) with { Outcome = o }).IsRefused);
+
+    /// <summary>A landblock as the summary prints it: <c>XXYY</c>.</summary>
+    private static string Landblock(uint id) =>
+        string.Create(CultureInfo.InvariantCulture, $"{CellIds.LandblockX(id):X2}{CellIds.LandblockY(id):X2}");
 
     private static IEnumerable<string> Seams(IReadOnlyList<(int Frame, uint CellId)> visits, int first, int last)
     {
         for (int k = first + 1; k <= last; k++)
         {
-            if ((visits[k].CellId >> 16) != (visits[k - 1].CellId >> 16))
+            if (CellIds.LandblockOf(visits[k].CellId) != CellIds.LandblockOf(visits[k - 1].CellId))
             {
-                yield return string.Create(CultureInfo.InvariantCulture, $"0x{visits[k - 1].CellId >> 16:X4} -> 0x{visits[k].CellId >> 16:X4} at frame {visits[k].Frame}");
+                yield return string.Create(CultureInfo.InvariantCulture, $"0x{Landblock(visits[k - 1].CellId)} -> 0x{Landblock(visits[k].CellId)} at frame {visits[k].Frame}");
             }
         }
     }

@@ -19,6 +19,9 @@ internal static class WalkSvg
     private const float MapMaxHeight = 620f;
     private const float ProfileHeight = 220f;
     private const float ContourInterval = 2f;
+
+    /// <summary>A physics polygon is drawn as a wall outline when its unit normal's |Z| is below this (within about 11.5° of vertical). Drawing only; floors come from the engine.</summary>
+    private const float WallMaxNormalZ = 0.2f;
     private static readonly XNamespace Svg = "http://www.w3.org/2000/svg";
 
     /// <summary>The SVG document for <paramref name="record"/>.</summary>
@@ -26,6 +29,9 @@ internal static class WalkSvg
     {
         IReadOnlyList<FrameSample> samples = record.Samples;
         Dictionary<uint, string> colours = Colours(record);
+
+        // The scene's world frame, centred on Holtburg as the scene runner's engine: only its id and frame helpers are used.
+        var frame = new PhysicsEngine(HoltburgWorld.Holtburg);
 
         // Map extent: the route, padded, in world metres (the engine's frame: 0xA9B4's SW corner is (0, 0)).
         float minX = samples.Min(s => s.Position.X) - 15f, maxX = samples.Max(s => s.Position.X) + 15f;
@@ -37,8 +43,8 @@ internal static class WalkSvg
 
         var map = new XElement(Svg + "g", new XAttribute("id", "map"));
         map.Add(new XElement(Svg + "rect", Attr("x", Margin), Attr("y", mapTop), Attr("width", (maxX - minX) * scale), Attr("height", mapHeight), new XAttribute("fill", "#f4f1e8"), new XAttribute("stroke", "#999")));
-        AddContours(map, world, minX, maxX, minY, maxY, Map);
-        AddFloorPlans(map, world, colours, Map);
+        AddContours(map, world, frame, minX, maxX, minY, maxY, Map);
+        AddFloorPlans(map, world, frame, colours, Map);
         AddRoute(map, samples, colours, s => Map(s.Position.X, s.Position.Y));
         foreach (Vector2 p in samples.Where(s => s.Refusal is not null).Select(s => Map(s.Position.X, s.Position.Y)).Distinct())
         {
@@ -78,7 +84,7 @@ internal static class WalkSvg
         float legendTop = profileTop + ProfileHeight + 30f;
         var legend = new XElement(Svg + "g", new XAttribute("id", "legend"));
         float lx = Margin, ly = legendTop;
-        foreach ((uint cell, string colour) in colours.Where(c => (c.Key & 0xFFFF) >= 0x0100))
+        foreach ((uint cell, string colour) in colours.Where(c => CellIds.IsIndoor(c.Key)))
         {
             legend.Add(new XElement(Svg + "rect", Attr("x", lx), Attr("y", ly - 9), Attr("width", 10f), Attr("height", 10f), new XAttribute("fill", colour)));
             legend.Add(Label(lx + 14, ly, $"0x{cell:X8} {HoltburgWorld.CellName(cell)}", 11));
@@ -117,7 +123,7 @@ internal static class WalkSvg
                 continue;
             }
 
-            colours[cell] = (cell & 0xFFFF) >= 0x0100
+            colours[cell] = CellIds.IsIndoor(cell)
                 ? Invariant($"hsl({(indoor++ * 137.508) % 360:0},75%,42%)")
                 : (outdoor++ % 2 == 0 ? "#333333" : "#888888");
         }
@@ -154,34 +160,40 @@ internal static class WalkSvg
         }
     }
 
-    private static void AddFloorPlans(XElement parent, HoltburgWorld world, Dictionary<uint, string> colours, Func<float, float, Vector2> place)
+    /// <summary>
+    /// The floors, in the cell's colour: the triangles the engine samples (<see cref="CellSurface.GetFloorTriangles"/>),
+    /// so the map cannot disagree with the physics; then the walls as outlines (near-vertical physics polygons).
+    /// </summary>
+    private static void AddFloorPlans(XElement parent, HoltburgWorld world, PhysicsEngine frame, Dictionary<uint, string> colours, Func<float, float, Vector2> place)
     {
+        string Points(uint cellId, IEnumerable<Vector3> landblockLocal) =>
+            string.Join(" ", landblockLocal.Select(v => frame.ToWorld(cellId, v)).Select(p => place(p.X, p.Y)).Select(p => Invariant($"{p.X:0.##},{p.Y:0.##}")));
+
+        var floors = new XElement(Svg + "g", new XAttribute("id", "floors"));
+        foreach (CellSurface surface in world.CellSurfaces)
+        {
+            string fill = colours.TryGetValue(surface.CellId, out string? colour) ? colour : "#bbbbbb";
+            foreach ((Vector3 a, Vector3 b, Vector3 c) in surface.GetFloorTriangles())
+            {
+                floors.Add(new XElement(Svg + "polygon", new XAttribute("points", Points(surface.CellId, [a, b, c])), new XAttribute("fill", fill), Attr("fill-opacity", 0.25f)));
+            }
+        }
+
         var plans = new XElement(Svg + "g", new XAttribute("id", "floor-plans"));
         foreach (var cell in world.Cells)
         {
-            Frame frame = cell.EnvCell.Position;
-            string fill = colours.TryGetValue(cell.CellId, out string? colour) ? colour : "#bbbbbb";
+            Frame position = cell.EnvCell.Position;
             foreach (Polygon polygon in cell.CellStruct.PhysicsPolygons.Values)
             {
-                Vector3[] v = polygon.VertexIds.Select(id => frame.Origin + Vector3.Transform(cell.CellStruct.VertexArray.Vertices[(ushort)id].Origin, frame.Orientation)).ToArray();
-                if (v.Length < 3)
+                Vector3[] v = polygon.VertexIds.Select(id => position.Origin + Vector3.Transform(cell.CellStruct.VertexArray.Vertices[(ushort)id].Origin, position.Orientation)).ToArray();
+                if (v.Length >= 3 && MathF.Abs(Vector3.Normalize(Vector3.Cross(v[1] - v[0], v[2] - v[0])).Z) < WallMaxNormalZ)
                 {
-                    continue;
-                }
-
-                Vector3 normal = Vector3.Normalize(Vector3.Cross(v[1] - v[0], v[2] - v[0]));
-                string points = string.Join(" ", v.Select(p => place(p.X, p.Y)).Select(p => Invariant($"{p.X:0.##},{p.Y:0.##}")));
-                if (normal.Z >= PhysicsConstants.FloorZ)
-                {
-                    parent.Add(new XElement(Svg + "polygon", new XAttribute("points", points), new XAttribute("fill", fill), Attr("fill-opacity", 0.25f)));
-                }
-                else if (MathF.Abs(normal.Z) < 0.2f)
-                {
-                    plans.Add(new XElement(Svg + "polygon", new XAttribute("points", points), new XAttribute("fill", "none"), new XAttribute("stroke", "#555"), Attr("stroke-width", 0.6f)));
+                    plans.Add(new XElement(Svg + "polygon", new XAttribute("points", Points(cell.CellId, v)), new XAttribute("fill", "none"), new XAttribute("stroke", "#555"), Attr("stroke-width", 0.6f)));
                 }
             }
         }
 
+        parent.Add(floors);
         parent.Add(plans);
     }
 
@@ -190,21 +202,20 @@ internal static class WalkSvg
     /// The map is padded past the route, so it can reach past the world's edge: there the edge
     /// landblock's terrain is sampled, clamped to its edge (flat outwards).
     /// </summary>
-    private static void AddContours(XElement parent, HoltburgWorld world, float minX, float maxX, float minY, float maxY, Func<float, float, Vector2> place)
+    private static void AddContours(XElement parent, HoltburgWorld world, PhysicsEngine frame, float minX, float maxX, float minY, float maxY, Func<float, float, Vector2> place)
     {
         var terrains = new Dictionary<uint, TerrainSurface>();
-        static int Landblock(int origin, float coordinate) =>
-            (int)Math.Clamp(origin + Math.Floor(coordinate / (double)PhysicsConstants.LandblockSize), 0, PhysicsConstants.MaxLandblockIndex);
         float Z(float x, float y)
         {
-            int lbX = Landblock(0xA9, x), lbY = Landblock(0xB4, y);
-            uint id = ((uint)lbX << 24) | ((uint)lbY << 16) | 0xFFFF;
+            var at = new Vector3(x, y, 0f);
+            uint id = frame.LandblockAt(at);
             if (!terrains.TryGetValue(id, out TerrainSurface? terrain))
             {
                 terrains[id] = terrain = world.Terrain(id);
             }
 
-            return terrain.SampleZ(x - ((lbX - 0xA9) * 192f), y - ((lbY - 0xB4) * 192f));
+            Vector3 local = frame.ToLandblockLocal(id, at);
+            return terrain.SampleZ(local.X, local.Y);
         }
 
         int nx = 240, ny = Math.Max(2, (int)(nx * (maxY - minY) / (maxX - minX)));

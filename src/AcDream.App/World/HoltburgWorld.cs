@@ -29,7 +29,7 @@ internal sealed class HoltburgWorld : ILandblockSource
     /// <summary>The needle's vertex indices in 0xA9B4: at landblock-local (72, 48) m.</summary>
     public static readonly (int X, int Y) NeedleVertex = (3, 2);
 
-    private const int HoltburgX = 0xA9, HoltburgY = 0xB4;
+    private static readonly int HoltburgX = CellIds.LandblockX(Holtburg), HoltburgY = CellIds.LandblockY(Holtburg);
 
     private readonly List<CellFixtureReader.FixtureCell> _cells;
     private readonly Dictionary<uint, Environment> _environments = [];
@@ -39,7 +39,8 @@ internal sealed class HoltburgWorld : ILandblockSource
         _cells = HoltburgFixtures.ReadAll();
         foreach (CellFixtureReader.FixtureCell cell in _cells)
         {
-            // The fixtures carry no environment ids: each cell gets its own synthetic environment.
+            // The fixtures carry no environment ids: each cell gets its own synthetic environment,
+            // numbered as the cell (0x0D000145 for 0xA9B40145). No CellIds helper gives a cell number.
             ushort environmentId = (ushort)(cell.CellId & 0xFFFF);
             cell.EnvCell.EnvironmentId = environmentId;
             cell.EnvCell.CellStructure = 0;
@@ -47,6 +48,7 @@ internal sealed class HoltburgWorld : ILandblockSource
         }
 
         HeightTable = BuildHeightTable();
+        CellSurfaces = _cells.ConvertAll(c => new CellSurface(c.CellId, c.EnvCell, c.CellStruct));
     }
 
     /// <summary>The region's height table: 256 heights in metres, finer steps near 94 m, coarser away from it.</summary>
@@ -54,6 +56,9 @@ internal sealed class HoltburgWorld : ILandblockSource
 
     /// <summary>The real cells of 0xA9B4, ascending id.</summary>
     public IReadOnlyList<CellFixtureReader.FixtureCell> Cells => _cells;
+
+    /// <summary>The engine's surfaces of <see cref="Cells"/>, in the same order: what the engine is given for 0xA9B4 (built once).</summary>
+    public IReadOnlyList<CellSurface> CellSurfaces { get; }
 
     /// <summary>Table entry i = 94 + 0.5·d + 0.02·d·|d| metres with d = i − 64: monotonic, 94 m at 64.</summary>
     public static float[] BuildHeightTable()
@@ -71,7 +76,7 @@ internal sealed class HoltburgWorld : ILandblockSource
     /// <summary>The 81 height indices of a landblock, x-major, from one function of the global vertex coordinates, so seams match.</summary>
     public static byte[] Heights(uint landblockId)
     {
-        int lbX = (int)(landblockId >> 24), lbY = (int)((landblockId >> 16) & 0xFF);
+        int lbX = CellIds.LandblockX(landblockId), lbY = CellIds.LandblockY(landblockId);
         var heights = new byte[LandBlock.VertexCount];
         for (int x = 0; x < 9; x++)
         {
@@ -113,12 +118,12 @@ internal sealed class HoltburgWorld : ILandblockSource
     };
 
     /// <summary>The game-triangle terrain of a landblock, as the engine gets it.</summary>
-    public TerrainSurface Terrain(uint landblockId) => new(Heights(landblockId), HeightTable, landblockId | 0xFFFF);
+    public TerrainSurface Terrain(uint landblockId) => new(Heights(landblockId), HeightTable, CellIds.LandblockOf(landblockId));
 
     /// <inheritdoc />
     public LoadedLandblock Load(uint landblockId)
     {
-        uint id = (landblockId & 0xFFFF0000u) | 0xFFFF;
+        uint id = CellIds.LandblockOf(landblockId);
         var landBlock = new LandBlock { Id = id, Height = Heights(id) };
         return id == Holtburg
             ? new LoadedLandblock(landBlock, _cells.ConvertAll(c => c.EnvCell), _environments)
