@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
 using AcDream.Core.Dat;
+using AcDream.Core.Physics;
 
 namespace AcDream.App.Fixtures;
 
@@ -55,7 +56,7 @@ public static class CellFixtureReader
 
             foreach (JsonElement visible in root.GetProperty("visibleCells").EnumerateArray())
             {
-                envCell.VisibleCells.Add((ushort)(uint.Parse(visible.GetString()!.AsSpan(2), NumberStyles.HexNumber, CultureInfo.InvariantCulture) & 0xFFFF));
+                envCell.VisibleCells.Add(CellIds.CellNumber(uint.Parse(visible.GetString()!.AsSpan(2), NumberStyles.HexNumber, CultureInfo.InvariantCulture)));
             }
 
             return new FixtureCell(cellId, envCell, cellStruct);

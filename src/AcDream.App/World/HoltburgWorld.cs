@@ -41,7 +41,7 @@ internal sealed class HoltburgWorld : ILandblockSource
         {
             // The fixtures carry no environment ids: each cell gets its own synthetic environment,
             // numbered as the cell (0x0D000145 for 0xA9B40145). No CellIds helper gives a cell number.
-            ushort environmentId = (ushort)(cell.CellId & 0xFFFF);
+            ushort environmentId = CellIds.CellNumber(cell.CellId);
             cell.EnvCell.EnvironmentId = environmentId;
             cell.EnvCell.CellStructure = 0;
             _environments.Add(0x0D000000u | environmentId, new Environment { Id = 0x0D000000u | environmentId, Cells = { [0] = cell.CellStruct } });

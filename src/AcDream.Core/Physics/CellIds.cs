@@ -26,6 +26,9 @@ public static class CellIds
     /// <summary>Landblock Y index (0..0xFE in the world) of any id.</summary>
     public static int LandblockY(uint id) => (int)((id >> 16) & 0xFF);
 
+    /// <summary>The cell number of an id: its low 16 bits (<c>CCCC</c>).</summary>
+    public static ushort CellNumber(uint id) => (ushort)(id & 0xFFFF);
+
     /// <summary>The landblock of any id, as the dat names it: <c>0xXXYYFFFF</c>.</summary>
     public static uint LandblockOf(uint id) => (id & 0xFFFF0000u) | 0xFFFFu;
 
