@@ -180,25 +180,16 @@ public sealed class CellSurface
             return false;
         }
 
-        ReadOnlySpan<int> candidates = _grid is null ? default : _grid.Candidates(x, y);
-        int count = _grid is null ? _floors.Length : candidates.Length;
-        bool found = false;
-        float bestDistance = float.PositiveInfinity;
-        for (int i = 0; i < count; i++)
+        if (_grid is not null)
         {
-            ref readonly FloorTriangle triangle = ref _floors[_grid is null ? i : candidates[i]];
-            if (!triangle.TrySample(x, y, out float candidate))
-            {
-                continue;
-            }
+            return _grid.TrySample(x, y, referenceZ, out z);
+        }
 
-            float distance = MathF.Abs(candidate - referenceZ);
-            if (!found || distance < bestDistance || (distance == bestDistance && candidate > z))
-            {
-                found = true;
-                bestDistance = distance;
-                z = candidate;
-            }
+        bool found = false;
+        float best = float.PositiveInfinity;
+        foreach (ref readonly FloorTriangle triangle in _floors.AsSpan())
+        {
+            FloorGrid.Keep(triangle, x, y, referenceZ, ref found, ref best, ref z);
         }
 
         return found;

@@ -99,4 +99,13 @@ public static class PhysicsConstants
     /// (Holtburg's cottage has an upper storey reaching out over its yard, 3 m up).
     /// </summary>
     public const float StoreyAbove = 2f;
+
+    /// <summary>
+    /// Most (grid square, triangle) entries a cell's floor grid keeps per floor triangle. The grid
+    /// lists each triangle in every square its bounds overlap; where triangles are large compared with
+    /// the squares (thousands of stacked whole-cell floors) the grid is made coarser until the entries
+    /// fit, so its memory and build time stay linear in the triangle count. Real cells use about 5.
+    /// </summary>
+    /// <value>16 entries per triangle (4 bytes each, 12 in a square long enough to be searched by Z).</value>
+    public const int MaxFloorGridEntriesPerTriangle = 16;
 }
