@@ -80,7 +80,7 @@ public sealed class CellSurface
         double length = Math.Sqrt(((double)orientation.X * orientation.X) + ((double)orientation.Y * orientation.Y)
             + ((double)orientation.Z * orientation.Z) + ((double)orientation.W * orientation.W));
         if (!float.IsFinite(orientation.X) || !float.IsFinite(orientation.Y) || !float.IsFinite(orientation.Z) || !float.IsFinite(orientation.W)
-            || !(length >= 1e-6))
+            || !(length >= PhysicsConstants.MinOrientationLength))
         {
             throw new ArgumentException($"{cell}: Position.Orientation {orientation} is not a rotation (non-finite, or shorter than 1e-6).", nameof(envCell));
         }
@@ -104,7 +104,7 @@ public sealed class CellSurface
 
             FloorMin = min;
             FloorMax = max;
-            _grid = _floors.Length > FloorGrid.MinTriangles ? new FloorGrid(_floors, min, max) : null;
+            _grid = _floors.Length > PhysicsConstants.FloorGridMinTriangles ? new FloorGrid(_floors, min, max) : null;
         }
         else
         {

@@ -25,16 +25,11 @@ namespace AcDream.Core.Physics;
 /// </remarks>
 internal sealed class FloorGrid
 {
-    /// <summary>Below this many triangles a plain loop is faster than the grid lookup.</summary>
-    public const int MinTriangles = 16;
 
-    /// <summary>
-    /// A square listing at most this many triangles is searched by a plain loop, in triangle order, as
-    /// a small cell is. Real cells list at most about 11 per square, so they never need the Z order.
-    /// </summary>
-    public const int LinearScanMax = 16;
+    /// <summary>A square listing at most this many triangles is searched by a plain loop (<see cref="PhysicsConstants.FloorGridLinearScanMax"/>).</summary>
+    public const int LinearScanMax = PhysicsConstants.FloorGridLinearScanMax;
 
-    private const int MaxSide = 64;
+    private const int MaxSide = PhysicsConstants.FloorGridMaxSide;
 
     private readonly FloorTriangle[] _triangles;
     private readonly Layout _layout;
@@ -287,7 +282,7 @@ internal sealed class FloorGrid
 
         public Layout(Vector2 min, Vector2 max, int side)
         {
-            Vector2 extent = Vector2.Max(max - min, new Vector2(0.25f));
+            Vector2 extent = Vector2.Max(max - min, new Vector2(PhysicsConstants.FloorGridMinExtent));
             Columns = Math.Clamp((int)MathF.Ceiling(extent.X / MathF.Max(extent.X, extent.Y) * side), 1, MaxSide);
             Rows = Math.Clamp((int)MathF.Ceiling(extent.Y / MathF.Max(extent.X, extent.Y) * side), 1, MaxSide);
             Min = min;

@@ -10,11 +10,8 @@ namespace AcDream.Core.Physics;
 /// </summary>
 internal readonly struct FloorTriangle
 {
-    /// <summary>
-    /// Smallest twice-area (m²) seen from above of a triangle that carries a floor: 1e-8 m², a
-    /// triangle 0.1 mm wide over 0.1 m. Anything smaller is rounding, not a surface.
-    /// </summary>
-    public const double MinDoubleArea = 1e-8;
+    /// <summary>Smallest twice-area (m²) of a triangle that carries a floor (<see cref="PhysicsConstants.MinFloorDoubleArea"/>).</summary>
+    public const double MinDoubleArea = PhysicsConstants.MinFloorDoubleArea;
 
     public readonly Vector2 A;
     public readonly Vector2 B;

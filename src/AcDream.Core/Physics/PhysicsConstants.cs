@@ -108,4 +108,30 @@ public static class PhysicsConstants
     /// </summary>
     /// <value>16 entries per triangle (4 bytes each, 12 in a square long enough to be searched by Z).</value>
     public const int MaxFloorGridEntriesPerTriangle = 16;
+
+    /// <summary>
+    /// Smallest twice-area (m²) seen from above of a triangle that carries a floor, and smallest
+    /// Newell-normal length of a polygon that has a normal: 1e-8 m², a triangle 0.1 mm wide over 0.1 m.
+    /// Anything smaller is rounding, not a surface.
+    /// </summary>
+    internal const double MinFloorDoubleArea = 1e-8;
+
+    /// <summary>Shortest quaternion (length) a cell's orientation may be before it is normalised: 1e-6; shorter is no rotation.</summary>
+    internal const double MinOrientationLength = 1e-6;
+
+    /// <summary>A cell with more floor triangles than this gets a floor grid; below it a plain loop is faster.</summary>
+    internal const int FloorGridMinTriangles = 16;
+
+    /// <summary>Most squares per side of a floor grid.</summary>
+    internal const int FloorGridMaxSide = 64;
+
+    /// <summary>Smallest extent (metres) a floor grid spans on each axis, so a sliver floor still gets squares of a sensible size.</summary>
+    internal const float FloorGridMinExtent = 0.25f;
+
+    /// <summary>
+    /// A floor-grid square listing at most this many triangles is searched by a plain loop, as a small
+    /// cell is; longer runs are kept in order of lowest Z and searched outwards from the reference Z.
+    /// Real cells list at most about 11 per square.
+    /// </summary>
+    internal const int FloorGridLinearScanMax = 16;
 }
