@@ -38,6 +38,37 @@ internal struct MoveQuery(Vector3 position, uint cellId, Vector2 delta, float st
 
     /// <summary>The feet's Z, metres.</summary>
     public readonly float Z => Position.Z;
+
+    /// <summary>Checks the arguments of a Resolve call; the exceptions name the spec's parameters.</summary>
+    public static void Validate(Vector3 pos, uint cellId, Vector3 delta, float stepUp)
+    {
+        if (!(float.IsFinite(pos.X) && float.IsFinite(pos.Y) && float.IsFinite(pos.Z)))
+        {
+            throw new ArgumentException($"currentPos {pos} must be finite.", "currentPos");
+        }
+
+        if (!(float.IsFinite(delta.X) && float.IsFinite(delta.Y) && float.IsFinite(delta.Z)))
+        {
+            throw new ArgumentException($"delta {delta} must be finite.", nameof(delta));
+        }
+
+        if (!float.IsFinite(stepUp) || stepUp < 0f)
+        {
+            throw new ArgumentOutOfRangeException("stepUpHeight", stepUp, "stepUpHeight must be a finite height ≥ 0 m.");
+        }
+
+        uint low = cellId & 0xFFFF;
+        if ((low > PhysicsConstants.CellsPerSide * PhysicsConstants.CellsPerSide && low < CellIds.FirstIndoor) || low > CellIds.LastIndoor)
+        {
+            throw new ArgumentException($"currentCellId 0x{cellId:X8} is not a cell: outdoor cells are 0x0001..0x0040, indoor 0x0100..0xFFFD.", "currentCellId");
+        }
+
+        if (!CellIds.IsInWorld(CellIds.LandblockX(cellId), CellIds.LandblockY(cellId)))
+        {
+            throw new ArgumentException(
+                $"currentCellId 0x{cellId:X8} names a landblock off the world: X and Y must be within 0x00..0x{PhysicsConstants.MaxLandblockIndex:X2}.", "currentCellId");
+        }
+    }
 }
 
 /// <summary>How a move's answer is formed once its ground is known; shared by both resolvers.</summary>

@@ -237,7 +237,7 @@ public sealed class PhysicsEngine
         Vector3 delta,
         float stepUpHeight)
     {
-        Validate(currentPos, currentCellId, delta, stepUpHeight);
+        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var query = new MoveQuery(currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in NoEffects);
         return Step(ref query);
     }
@@ -264,7 +264,7 @@ public sealed class PhysicsEngine
         float stepUpHeight,
         in MovementOptions options)
     {
-        Validate(currentPos, currentCellId, delta, stepUpHeight);
+        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var move = new Vector2(delta.X, delta.Y);
         if (options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep)
         {
@@ -295,36 +295,6 @@ public sealed class PhysicsEngine
     /// <summary>One move, end-point checked.</summary>
     private ResolveResult Step(ref MoveQuery query) =>
         CellIds.IsIndoor(query.CellId) ? _indoor.Resolve(ref query) : _outdoor.Resolve(ref query);
-
-    private static void Validate(Vector3 pos, uint cellId, Vector3 delta, float stepUp)
-    {
-        if (!IsFinite(pos))
-        {
-            throw new ArgumentException($"currentPos {pos} must be finite.", "currentPos");
-        }
-
-        if (!IsFinite(delta))
-        {
-            throw new ArgumentException($"delta {delta} must be finite.", nameof(delta));
-        }
-
-        if (!float.IsFinite(stepUp) || stepUp < 0f)
-        {
-            throw new ArgumentOutOfRangeException("stepUpHeight", stepUp, "stepUpHeight must be a finite height ≥ 0 m.");
-        }
-
-        uint low = cellId & 0xFFFF;
-        if ((low > PhysicsConstants.CellsPerSide * PhysicsConstants.CellsPerSide && low < CellIds.FirstIndoor) || low > CellIds.LastIndoor)
-        {
-            throw new ArgumentException($"currentCellId 0x{cellId:X8} is not a cell: outdoor cells are 0x0001..0x0040, indoor 0x0100..0xFFFD.", "currentCellId");
-        }
-
-        if (!CellIds.IsInWorld(CellIds.LandblockX(cellId), CellIds.LandblockY(cellId)))
-        {
-            throw new ArgumentException(
-                $"currentCellId 0x{cellId:X8} names a landblock off the world: X and Y must be within 0x00..0x{PhysicsConstants.MaxLandblockIndex:X2}.", "currentCellId");
-        }
-    }
 
     private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 
