@@ -27,6 +27,9 @@ internal struct MoveQuery(Vector3 position, uint cellId, Vector2 delta, float st
     /// <summary>The landblock the move is resolved in (indoors: the cell's).</summary>
     public LandblockEntry Entry = null!;
 
+    /// <summary>Outdoors: the landblock under the mover, as read at the start of the call.</summary>
+    public LandblockEntry? Here;
+
     /// <summary>The mover, landblock-local (a point that survives the round trip to the world frame).</summary>
     public Vector2 P0;
 
@@ -69,6 +72,16 @@ internal struct MoveQuery(Vector3 position, uint cellId, Vector2 delta, float st
                 $"currentCellId 0x{cellId:X8} names a landblock off the world: X and Y must be within 0x00..0x{PhysicsConstants.MaxLandblockIndex:X2}.", "currentCellId");
         }
     }
+
+    /// <summary>
+    /// Landblock (x, y): the entry this call already read when it is one of those, else the
+    /// registry's. A call reads each landblock's slot once, so it sees each landblock whole even
+    /// while a writer replaces it.
+    /// </summary>
+    public readonly LandblockEntry? Landblock(LandblockRegistry registry, int x, int y) =>
+        Entry is { } entry && entry.X == x && entry.Y == y ? entry
+        : Here is { } here && here.X == x && here.Y == y ? here
+        : registry.Get(x, y);
 }
 
 /// <summary>How a move's answer is formed once its ground is known; shared by both resolvers.</summary>

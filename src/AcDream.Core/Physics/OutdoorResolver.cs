@@ -27,7 +27,8 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         WorldFrame.Wrap(ref candidate.X, ref toX); // rounding can put it on the far seam
         WorldFrame.Wrap(ref candidate.Y, ref toY);
         float hereZ = here.Terrain.SampleZUnchecked(local.X, local.Y);
-        LandblockEntry? there = registry.Get(toX, toY);
+        q.Here = here;
+        LandblockEntry? there = q.Landblock(registry, toX, toY); // `here` itself when the move stays in its landblock: one read of the slot
         if (there is null)
         {
             return Refuse(ref q, local, hereZ, hereCellId, CellIds.IsInWorld(toX, toY) ? ResolveOutcome.UnloadedAhead : ResolveOutcome.EdgeOfWorld);

@@ -19,9 +19,11 @@ namespace AcDream.Core.Physics;
 /// Threads: any number of threads may call <c>Resolve</c> (and the other queries) at the same time,
 /// and one writer thread may call <see cref="AddLandblock"/> and <see cref="RemoveLandblock"/> while
 /// they do. Each landblock is published whole, in one reference write, and never changed afterwards,
-/// so a resolver sees it either wholly before or wholly after a change, never half of one. (A move
-/// across a seam reads two landblocks, each whole, possibly one from before and one from after a
-/// change made during the call.) Resolving takes no lock and allocates nothing.
+/// so a resolver sees it either wholly before or wholly after a change, never half of one: one call
+/// reads each landblock once. (A move across a seam reads two landblocks, each whole, possibly one
+/// from before and one from after a change made during the call; a swept move is a series of such
+/// moves, each reading afresh, so a change can fall between two of its sub-steps.) Resolving takes
+/// no lock and allocates nothing.
 /// </para>
 /// <para>
 /// This class is a facade: the landblock registry (<c>LandblockRegistry</c>), the world frame

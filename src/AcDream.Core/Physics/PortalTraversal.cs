@@ -123,7 +123,7 @@ internal sealed class PortalTraversal(LandblockRegistry registry)
             int x = q.Entry.X, y = q.Entry.Y;
             WorldFrame.Wrap(ref local.X, ref x);
             WorldFrame.Wrap(ref local.Y, ref y);
-            LandblockEntry? land = registry.Get(x, y);
+            LandblockEntry? land = q.Landblock(registry, x, y); // the cell's own landblock as already read, not a second read
             return land is null
                 ? Landing.Blocked(CellIds.IsInWorld(x, y) ? ResolveOutcome.UnloadedAhead : ResolveOutcome.EdgeOfWorld)
                 : Landing.OnTerrain(land, local, land.Terrain.SampleZUnchecked(local.X, local.Y));
