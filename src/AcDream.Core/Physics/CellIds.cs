@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace AcDream.Core.Physics;
 
 /// <summary>
@@ -59,14 +61,17 @@ public static class CellIds
     }
 
     /// <summary><see cref="OutdoorCellNumber"/> for coordinates known to be finite.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static uint OutdoorCellNumberUnchecked(float localX, float localY) =>
         (uint)((OutdoorColumn(localX) * PhysicsConstants.CellsPerSide) + OutdoorColumn(localY) + 1);
 
     /// <summary>A landblock-local coordinate in cell widths, clamped to the landblock: 0..8.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static double InCells(float coordinate) =>
         Math.Clamp(coordinate, 0f, PhysicsConstants.LandblockSize) * (1.0 / PhysicsConstants.CellSize);
 
     /// <summary>The outdoor cell column (or row) 0..7 of a finite landblock-local coordinate, clamped.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static int OutdoorColumn(float coordinate) => Math.Min((int)InCells(coordinate), PhysicsConstants.CellsPerSide - 1);
 
     internal static uint Prefix(uint id) => id & 0xFFFF0000u;
@@ -74,8 +79,10 @@ public static class CellIds
     internal static uint Prefix(int landblockX, int landblockY) => ((uint)landblockX << 24) | ((uint)landblockY << 16);
 
     /// <summary>Dense index of a landblock for lookup tables: X·256 + Y.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static int LandblockIndex(int landblockX, int landblockY) => (landblockX << 8) | landblockY;
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static bool IsInWorld(int landblockX, int landblockY) =>
         (uint)landblockX <= PhysicsConstants.MaxLandblockIndex && (uint)landblockY <= PhysicsConstants.MaxLandblockIndex;
 

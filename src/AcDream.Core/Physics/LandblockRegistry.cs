@@ -1,3 +1,5 @@
+using System.Runtime.CompilerServices;
+
 namespace AcDream.Core.Physics;
 
 /// <summary>
@@ -15,6 +17,7 @@ internal sealed class LandblockRegistry
     public int Count => Volatile.Read(ref _count);
 
     /// <summary>The landblock (lbX, lbY), or null when it is off the world or not registered.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public LandblockEntry? Get(int lbX, int lbY) =>
         CellIds.IsInWorld(lbX, lbY) ? Volatile.Read(ref _slots[CellIds.LandblockIndex(lbX, lbY)]) : null;
 

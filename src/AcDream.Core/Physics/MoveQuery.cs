@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -7,28 +8,31 @@ namespace AcDream.Core.Physics;
 /// horizontal delta, step height, effects), the move in its landblock's frame once located, and how
 /// many cell visits its portal search has left. Passed by reference; nothing here allocates.
 /// </summary>
-internal struct MoveQuery(Vector3 position, uint cellId, Vector2 delta, float stepUp, in MovementOptions options)
+internal ref struct MoveQuery
 {
     /// <summary>The mover's feet, world metres.</summary>
-    public readonly Vector3 Position = position;
+    public readonly Vector3 Position;
 
     /// <summary>The cell the caller says the mover is in.</summary>
-    public readonly uint CellId = cellId;
+    public readonly uint CellId;
 
     /// <summary>The horizontal move, metres.</summary>
-    public readonly Vector2 Delta = delta;
+    public readonly Vector2 Delta;
 
     /// <summary>Highest rise the move may climb, metres.</summary>
-    public readonly float StepUp = stepUp;
+    public readonly float StepUp;
 
-    /// <summary>The opt-in effects.</summary>
-    public readonly MovementOptions Options = options;
+    /// <summary>The opt-in effects (the caller's, by reference: never copied).</summary>
+    public readonly ref readonly MovementOptions Options;
 
     /// <summary>The landblock the move is resolved in (indoors: the cell's).</summary>
-    public LandblockEntry Entry = null!;
+    public LandblockEntry Entry;
 
     /// <summary>Outdoors: the landblock under the mover, as read at the start of the call.</summary>
     public LandblockEntry? Here;
+
+    /// <summary>Outdoors: where the mover stands, as located at the start of the call (a refusal keeps it there).</summary>
+    public Standing Stand;
 
     /// <summary>The mover, landblock-local (a point that survives the round trip to the world frame).</summary>
     public Vector2 P0;
@@ -37,7 +41,18 @@ internal struct MoveQuery(Vector3 position, uint cellId, Vector2 delta, float st
     public Vector2 P1;
 
     /// <summary>Cell visits the portal search may still make (<see cref="PhysicsConstants.MaxCellVisits"/> per call).</summary>
-    public int CellVisitsLeft = PhysicsConstants.MaxCellVisits;
+    public int CellVisitsLeft;
+
+    public MoveQuery(Vector3 position, uint cellId, Vector2 delta, float stepUp, ref readonly MovementOptions options)
+    {
+        Position = position;
+        CellId = cellId;
+        Delta = delta;
+        StepUp = stepUp;
+        Options = ref options;
+        Entry = null!;
+        CellVisitsLeft = PhysicsConstants.MaxCellVisits;
+    }
 
     /// <summary>The feet's Z, metres.</summary>
     public readonly float Z => Position.Z;
@@ -78,6 +93,7 @@ internal struct MoveQuery(Vector3 position, uint cellId, Vector2 delta, float st
     /// registry's. A call reads each landblock's slot once, so it sees each landblock whole even
     /// while a writer replaces it.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly LandblockEntry? Landblock(LandblockRegistry registry, int x, int y) =>
         Entry is { } entry && entry.X == x && entry.Y == y ? entry
         : Here is { } here && here.X == x && here.Y == y ? here
@@ -92,6 +108,7 @@ internal static class Answers
     /// and the ground farther below the feet than the step-down height (and the ground tolerance),
     /// airborne at the feet's Z.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static ResolveResult Land(Vector3 ground, float z, uint cellId, in MovementOptions options) =>
         options.StepDownHeight is float down && z - ground.Z > MathF.Max(down, PhysicsConstants.GroundTolerance)
             ? new ResolveResult(ground with { Z = z }, cellId, false)
@@ -127,3 +144,6 @@ internal static class Answers
         return new ResolveResult(at, cellId, onGround) { Outcome = why, SurfaceNormal = normal };
     }
 }
+
+/// <summary>An outdoor mover's place: landblock (X, Y), its landblock-local point, the terrain's Z there and its outdoor cell id.</summary>
+internal readonly record struct Standing(int X, int Y, Vector2 Local, float GroundZ, uint CellId);

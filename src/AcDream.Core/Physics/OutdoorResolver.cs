@@ -11,68 +11,82 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
 {
     public ResolveResult Resolve(ref MoveQuery q)
     {
-        frame.Locate(q.Position, q.CellId, out int lbX, out int lbY, out Vector2 local);
+        // The query's inputs as locals: the hot path then works in registers, not through the reference.
+        Vector3 position = q.Position;
+        Vector2 delta = q.Delta;
+        frame.Locate(position, q.CellId, out int lbX, out int lbY, out Vector2 local);
         LandblockEntry? here = registry.Get(lbX, lbY);
         uint hereCellId = WorldFrame.OutdoorCellId(lbX, lbY, local);
         if (here is null)
         {
-            return new ResolveResult(q.Position, hereCellId, true) { Outcome = ResolveOutcome.Held }; // the land under the mover is not loaded
+            return new ResolveResult(position, hereCellId, true) { Outcome = ResolveOutcome.Held }; // the land under the mover is not loaded
         }
 
-        Vector2 candidate = local + q.Delta;
+        Vector2 candidate = local + delta;
         int toX = lbX, toY = lbY;
         WorldFrame.Wrap(ref candidate.X, ref toX);
         WorldFrame.Wrap(ref candidate.Y, ref toY);
         candidate = frame.Representable(toX, toY, candidate);
         WorldFrame.Wrap(ref candidate.X, ref toX); // rounding can put it on the far seam
         WorldFrame.Wrap(ref candidate.Y, ref toY);
-        float hereZ = here.Terrain.SampleZUnchecked(local.X, local.Y);
+        LandblockEntry? there = toX == lbX && toY == lbY ? here : registry.Get(toX, toY); // one read of each slot per call
+        q.Stand = new Standing(lbX, lbY, local, here.Terrain.SampleZUnchecked(local.X, local.Y), hereCellId);
         q.Here = here;
-        LandblockEntry? there = q.Landblock(registry, toX, toY); // `here` itself when the move stays in its landblock: one read of the slot
         if (there is null)
         {
-            return Refuse(ref q, local, hereZ, hereCellId, CellIds.IsInWorld(toX, toY) ? ResolveOutcome.UnloadedAhead : ResolveOutcome.EdgeOfWorld);
+            return Refuse(ref q, CellIds.IsInWorld(toX, toY) ? ResolveOutcome.UnloadedAhead : ResolveOutcome.EdgeOfWorld);
         }
 
         q.Entry = there;
-        q.P0 = candidate - q.Delta; // the mover, in the candidate's landblock frame
+        q.P0 = candidate - delta; // the mover, in the candidate's landblock frame
         q.P1 = candidate;
         float terrainZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
-        if (TryEnterCell(there, candidate, terrainZ, q.StepUp, out int cellIndex, out float floorZ))
-        {
-            if (floorZ - q.Z > q.StepUp && floorZ - MathF.Max(q.Z, hereZ) > q.StepUp)
-            {
-                return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.StepTooHigh); // the floor's edge is a step too high
-            }
-
-            if (q.Options.DoorsOnly && !StartsOverFloor(there, cellIndex, q.P0, q.Z, q.StepUp) && !TryEnterByDoor(ref q, out cellIndex, out floorZ))
-            {
-                return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.OuterWall);
-            }
-
-            return Answers.Land(frame.ToWorld(toX, toY, candidate, floorZ), q.Z, there.Cells[cellIndex].CellId, in q.Options);
-        }
-
-        if (q.Options.DoorsOnly && StepsIntoStorey(there, q.P0, q.Z, candidate, terrainZ))
-        {
-            return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.OuterWall);
-        }
-
-        if (terrainZ - q.Z > q.StepUp && terrainZ - MathF.Max(q.Z, hereZ) > q.StepUp)
-        {
-            return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.StepTooHigh, there.Terrain.NormalUnchecked(candidate.X, candidate.Y));
-        }
-
-        if (q.Options.WalkableSlope && terrainZ > q.Z && there.Terrain.NormalUnchecked(candidate.X, candidate.Y) is var normal && normal.Z < PhysicsConstants.FloorZ)
-        {
-            return Refuse(ref q, local, hereZ, hereCellId, ResolveOutcome.SlopeTooSteep, normal);
-        }
-
-        return Answers.Land(frame.ToWorld(toX, toY, candidate, terrainZ), q.Z, WorldFrame.OutdoorCellId(toX, toY, candidate), in q.Options);
-
-        ResolveResult Refuse(ref MoveQuery q, Vector2 at, float ground, uint cellId, ResolveOutcome why, Vector3 surface = default) =>
-            Answers.Refuse(in frame, lbX, lbY, at, q.Z, ground, cellId, in q.Options, why, surface);
+        return TryEnterCell(there, candidate, terrainZ, q.StepUp, out int cellIndex, out float floorZ)
+            ? EnterCell(ref q, cellIndex, floorZ)
+            : WalkTerrain(ref q, terrainZ);
     }
+
+    /// <summary>The move ends over cell <paramref name="cellIndex"/>'s floor at the ground there: entered, unless its edge is a step too high or (doors only) no door leads in.</summary>
+    private ResolveResult EnterCell(ref MoveQuery q, int cellIndex, float floorZ)
+    {
+        if (floorZ - q.Z > q.StepUp && floorZ - MathF.Max(q.Z, q.Stand.GroundZ) > q.StepUp)
+        {
+            return Refuse(ref q, ResolveOutcome.StepTooHigh); // the floor's edge is a step too high
+        }
+
+        if (q.Options.DoorsOnly && !StartsOverFloor(q.Entry, cellIndex, q.P0, q.Z, q.StepUp) && !TryEnterByDoor(ref q, out cellIndex, out floorZ))
+        {
+            return Refuse(ref q, ResolveOutcome.OuterWall);
+        }
+
+        return Answers.Land(frame.ToWorld(q.Entry.X, q.Entry.Y, q.P1, floorZ), q.Z, q.Entry.Cells[cellIndex].CellId, in q.Options);
+    }
+
+    /// <summary>The move ends on the terrain at <paramref name="terrainZ"/>: the storey, step and slope checks, then on it.</summary>
+    private ResolveResult WalkTerrain(ref MoveQuery q, float terrainZ)
+    {
+        LandblockEntry there = q.Entry;
+        if (q.Options.DoorsOnly && StepsIntoStorey(there, q.P0, q.Z, q.P1, terrainZ))
+        {
+            return Refuse(ref q, ResolveOutcome.OuterWall);
+        }
+
+        if (terrainZ - q.Z > q.StepUp && terrainZ - MathF.Max(q.Z, q.Stand.GroundZ) > q.StepUp)
+        {
+            return Refuse(ref q, ResolveOutcome.StepTooHigh, there.Terrain.NormalUnchecked(q.P1.X, q.P1.Y));
+        }
+
+        if (q.Options.WalkableSlope && terrainZ > q.Z && there.Terrain.NormalUnchecked(q.P1.X, q.P1.Y) is var normal && normal.Z < PhysicsConstants.FloorZ)
+        {
+            return Refuse(ref q, ResolveOutcome.SlopeTooSteep, normal);
+        }
+
+        return Answers.Land(frame.ToWorld(there.X, there.Y, q.P1, terrainZ), q.Z, WorldFrame.OutdoorCellId(there.X, there.Y, q.P1), in q.Options);
+    }
+
+    /// <summary>A refused move: the mover stays where it stands (<see cref="MoveQuery.Stand"/>), against the terrain's Z under it.</summary>
+    private ResolveResult Refuse(ref MoveQuery q, ResolveOutcome why, Vector3 surface = default) =>
+        Answers.Refuse(in frame, q.Stand.X, q.Stand.Y, q.Stand.Local, q.Z, q.Stand.GroundZ, q.Stand.CellId, in q.Options, why, surface);
 
     /// <summary>
     /// Outdoor entry: the floor, among the cells over the candidate's outdoor cell, nearest the

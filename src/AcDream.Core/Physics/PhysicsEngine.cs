@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -34,9 +35,6 @@ namespace AcDream.Core.Physics;
 /// </remarks>
 public sealed class PhysicsEngine
 {
-    /// <summary>The options of the four-argument Resolve: no effects.</summary>
-    private static readonly MovementOptions NoEffects = default;
-
     private readonly LandblockRegistry _registry = new();
     private readonly WorldFrame _frame;
     private readonly OutdoorResolver _outdoor;
@@ -240,7 +238,8 @@ public sealed class PhysicsEngine
         float stepUpHeight)
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var query = new MoveQuery(currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in NoEffects);
+        MovementOptions none = default; // no effects: the spec's engine
+        var query = new MoveQuery(currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
         return Step(ref query);
     }
 
@@ -278,6 +277,7 @@ public sealed class PhysicsEngine
     }
 
     /// <summary>Equal sub-steps no longer than <paramref name="sweep"/>, stopping at the first refused one, whose outcome the answer reports.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: its queries would be zeroed on every call, swept or not
     private ResolveResult Sweep(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, float sweep)
     {
         int steps = (int)Math.Min(Math.Ceiling(move.Length() / (double)sweep), PhysicsConstants.MaxSweepSteps);

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -15,12 +16,15 @@ internal readonly struct WorldFrame(int originX, int originY)
     public int OriginY { get; } = originY;
 
     /// <summary>World X (or Y) of the south-west corner of landblock index <paramref name="landblock"/>, metres.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static float Offset(int landblock, int origin) => (landblock - origin) * PhysicsConstants.LandblockSize;
 
     /// <summary>World XY of the south-west corner of landblock (lbX, lbY), metres.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector2 Origin(int lbX, int lbY) => new(Offset(lbX, OriginX), Offset(lbY, OriginY));
 
     /// <summary>The world position of landblock-local (local, z) in landblock (lbX, lbY): one rounding.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 ToWorld(int lbX, int lbY, Vector2 local, float z) =>
         new(Offset(lbX, OriginX) + local.X, Offset(lbY, OriginY) + local.Y, z);
 
@@ -30,6 +34,7 @@ internal readonly struct WorldFrame(int originX, int originY)
     /// exactly where its answer was computed, and resolving it again finds the same ground. Exact after
     /// one round trip (the subtraction of the landblock's offset from a rounded world value is exact).
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector2 Representable(int lbX, int lbY, Vector2 local)
     {
         Vector2 origin = Origin(lbX, lbY);
@@ -41,6 +46,7 @@ internal readonly struct WorldFrame(int originX, int originY)
     /// cell id names when the position is within <see cref="PhysicsConstants.SeamSlack"/> of it (world
     /// rounding far from the origin can put a position a hair past a seam), else the one under it.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void Locate(Vector3 pos, uint cellId, out int lbX, out int lbY, out Vector2 local)
     {
         if ((cellId & 0xFFFF) != 0)
@@ -78,13 +84,19 @@ internal readonly struct WorldFrame(int originX, int originY)
     /// Moves a landblock-local coordinate into 0 ≤ c &lt; 192, stepping the landblock index to match.
     /// Exact: subtracting a multiple of 192 from a float in the adjacent range loses nothing.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static void Wrap(ref float coordinate, ref int landblock)
     {
-        if (coordinate >= 0f && coordinate < PhysicsConstants.LandblockSize)
+        if (!(coordinate >= 0f && coordinate < PhysicsConstants.LandblockSize))
         {
-            return;
+            WrapAcrossSeam(ref coordinate, ref landblock);
         }
+    }
 
+    /// <summary><see cref="Wrap"/> for a coordinate outside 0..192: out of line, since most moves stay inside.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static void WrapAcrossSeam(ref float coordinate, ref int landblock)
+    {
         double steps = Math.Floor(coordinate / (double)PhysicsConstants.LandblockSize);
         steps = Math.Clamp(steps, -2 * PhysicsConstants.WorldSide, 2 * PhysicsConstants.WorldSide); // far off the world; stays off it
         coordinate = (float)(coordinate - (steps * PhysicsConstants.LandblockSize));
