@@ -1,4 +1,6 @@
+using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -20,7 +22,7 @@ internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame fram
 
         if (!entry.TryGetCellIndex(q.CellId, out int cellIndex))
         {
-            throw new ArgumentException($"cell 0x{q.CellId:X8} is not registered in its landblock 0x{q.CellId | 0xFFFF:X8}.", "currentCellId");
+            ThrowNotRegistered(q.CellId);
         }
 
         q.Entry = entry;
@@ -35,7 +37,7 @@ internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame fram
             case Arrival.Floor:
                 return Answers.Land(frame.ToWorld(lbX, lbY, q.P1, landing.Z), q.Z, entry.Cells[landing.CellIndex].CellId, in q.Options);
             case Arrival.Terrain:
-                LandblockEntry land = landing.Land!;
+                LandblockEntry land = q.Outside!;
                 Vector2 local = landing.TerrainLocal;
                 if (q.Options.WalkableSlope && landing.Z > q.Z
                     && land.Terrain.NormalUnchecked(local.X, local.Y) is var normal && normal.Z < PhysicsConstants.FloorZ)
@@ -49,6 +51,12 @@ internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame fram
                 return Refuse(ref q, cell, landing.Refusal, landing.WallNormal);
         }
     }
+
+    /// <summary>Out of line, so Resolve's frame carries no string builder to zero on every call.</summary>
+    [DoesNotReturn]
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static void ThrowNotRegistered(uint cellId) =>
+        throw new ArgumentException($"cell 0x{cellId:X8} is not registered in its landblock 0x{cellId | 0xFFFF:X8}.", "currentCellId");
 
     /// <summary>The mover stays where it is, on its own cell's floor if it is at (or below) it.</summary>
     private ResolveResult Refuse(ref MoveQuery q, CellSurface cell, ResolveOutcome why, Vector3 normal = default) =>

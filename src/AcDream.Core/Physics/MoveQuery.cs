@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Diagnostics.CodeAnalysis;
 using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
@@ -31,6 +32,9 @@ internal ref struct MoveQuery
     /// <summary>Outdoors: the landblock under the mover, as read at the start of the call.</summary>
     public LandblockEntry? Here;
 
+    /// <summary>The landblock of the terrain the portal search last landed on through a door to the outdoors.</summary>
+    public LandblockEntry? Outside;
+
     /// <summary>Outdoors: where the mover stands, as located at the start of the call (a refusal keeps it there).</summary>
     public Standing Stand;
 
@@ -51,6 +55,11 @@ internal ref struct MoveQuery
         StepUp = stepUp;
         Options = ref options;
         Entry = null!;
+        Here = null;
+        Outside = null;
+        Stand = default;
+        P0 = default;
+        P1 = default;
         CellVisitsLeft = PhysicsConstants.MaxCellVisits;
     }
 
@@ -58,14 +67,39 @@ internal ref struct MoveQuery
     public readonly float Z => Position.Z;
 
     /// <summary>Checks the arguments of a Resolve call; the exceptions name the spec's parameters.</summary>
+    /// <remarks>
+    /// The checks inline into Resolve; the messages are built out of line (<see cref="ThrowInvalid"/>),
+    /// so Resolve's frame carries no string builders to zero on every call.
+    /// </remarks>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static void Validate(Vector3 pos, uint cellId, Vector3 delta, float stepUp)
     {
-        if (!(float.IsFinite(pos.X) && float.IsFinite(pos.Y) && float.IsFinite(pos.Z)))
+        if (!(IsFinite(pos) && IsFinite(delta) && float.IsFinite(stepUp) && stepUp >= 0f && IsCellOfTheWorld(cellId)))
+        {
+            ThrowInvalid(pos, cellId, delta, stepUp);
+        }
+    }
+
+    private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+
+    private static bool IsCellOfTheWorld(uint cellId)
+    {
+        uint low = cellId & 0xFFFF;
+        return !((low > PhysicsConstants.CellsPerSide * PhysicsConstants.CellsPerSide && low < CellIds.FirstIndoor) || low > CellIds.LastIndoor)
+            && CellIds.IsInWorld(CellIds.LandblockX(cellId), CellIds.LandblockY(cellId));
+    }
+
+    /// <summary>The exception for the first argument <see cref="Validate"/> finds wrong.</summary>
+    [DoesNotReturn]
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static void ThrowInvalid(Vector3 pos, uint cellId, Vector3 delta, float stepUp)
+    {
+        if (!IsFinite(pos))
         {
             throw new ArgumentException($"currentPos {pos} must be finite.", "currentPos");
         }
 
-        if (!(float.IsFinite(delta.X) && float.IsFinite(delta.Y) && float.IsFinite(delta.Z)))
+        if (!IsFinite(delta))
         {
             throw new ArgumentException($"delta {delta} must be finite.", nameof(delta));
         }
@@ -81,11 +115,8 @@ internal ref struct MoveQuery
             throw new ArgumentException($"currentCellId 0x{cellId:X8} is not a cell: outdoor cells are 0x0001..0x0040, indoor 0x0100..0xFFFD.", "currentCellId");
         }
 
-        if (!CellIds.IsInWorld(CellIds.LandblockX(cellId), CellIds.LandblockY(cellId)))
-        {
-            throw new ArgumentException(
-                $"currentCellId 0x{cellId:X8} names a landblock off the world: X and Y must be within 0x00..0x{PhysicsConstants.MaxLandblockIndex:X2}.", "currentCellId");
-        }
+        throw new ArgumentException(
+            $"currentCellId 0x{cellId:X8} names a landblock off the world: X and Y must be within 0x00..0x{PhysicsConstants.MaxLandblockIndex:X2}.", "currentCellId");
     }
 
     /// <summary>

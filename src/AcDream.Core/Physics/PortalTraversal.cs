@@ -126,7 +126,7 @@ internal sealed class PortalTraversal(LandblockRegistry registry)
             LandblockEntry? land = q.Landblock(registry, x, y); // the cell's own landblock as already read, not a second read
             return land is null
                 ? Landing.Blocked(CellIds.IsInWorld(x, y) ? ResolveOutcome.UnloadedAhead : ResolveOutcome.EdgeOfWorld)
-                : Landing.OnTerrain(land, local, land.Terrain.SampleZUnchecked(local.X, local.Y));
+                : Landing.OnTerrain(ref q, land, local, land.Terrain.SampleZUnchecked(local.X, local.Y));
         }
 
         return FindLanding(ref q, new Hop(target, hop.Cell, hop.Depth + 1, t, falling));
@@ -159,14 +159,23 @@ internal enum Arrival
     Terrain,
 }
 
-/// <summary>The end of a portal search: a floor, the terrain beyond a door, or why there is none.</summary>
-internal readonly record struct Landing(Arrival Kind, int CellIndex, float Z, LandblockEntry? Land, Vector2 TerrainLocal, ResolveOutcome Refusal, Vector3 WallNormal)
+/// <summary>
+/// The end of a portal search: a floor, the terrain beyond a door (its landblock is the query's
+/// <see cref="MoveQuery.Outside"/>), or why there is none. No object reference: a landing is a plain
+/// value, so the many a search returns need no zeroing.
+/// </summary>
+internal readonly record struct Landing(Arrival Kind, int CellIndex, float Z, Vector2 TerrainLocal, ResolveOutcome Refusal, Vector3 WallNormal)
 {
-    public static Landing Nothing(Vector3 wallNormal) => new(Arrival.Nothing, -1, 0f, null, default, ResolveOutcome.Wall, wallNormal);
+    public static Landing Nothing(Vector3 wallNormal) => new(Arrival.Nothing, -1, 0f, default, ResolveOutcome.Wall, wallNormal);
 
-    public static Landing Blocked(ResolveOutcome why) => new(Arrival.Blocked, -1, 0f, null, default, why, default);
+    public static Landing Blocked(ResolveOutcome why) => new(Arrival.Blocked, -1, 0f, default, why, default);
 
-    public static Landing OnFloor(int cellIndex, float z) => new(Arrival.Floor, cellIndex, z, null, default, ResolveOutcome.Moved, default);
+    public static Landing OnFloor(int cellIndex, float z) => new(Arrival.Floor, cellIndex, z, default, ResolveOutcome.Moved, default);
 
-    public static Landing OnTerrain(LandblockEntry land, Vector2 local, float z) => new(Arrival.Terrain, -1, z, land, local, ResolveOutcome.Moved, default);
+    /// <summary>On the terrain of <paramref name="land"/> (kept in <paramref name="q"/>) at <paramref name="local"/>.</summary>
+    public static Landing OnTerrain(ref MoveQuery q, LandblockEntry land, Vector2 local, float z)
+    {
+        q.Outside = land;
+        return new(Arrival.Terrain, -1, z, local, ResolveOutcome.Moved, default);
+    }
 }
