@@ -18,7 +18,7 @@ namespace AcDream.Core.Physics;
 /// finer squares would only list the same triangles again.
 /// </para>
 /// <para>
-/// Stacks: a square listing more than <see cref="LinearScanMax"/> triangles keeps them sorted by
+/// Stacks: a square listing more than <see cref="PhysicsConstants.FloorGridLinearScanMax"/> triangles keeps them sorted by
 /// their lowest Z, with the highest Z of each prefix, and a query searches outwards from the reference
 /// Z (down, then up) until the remaining triangles' Z ranges are farther than the nearest floor found.
 /// </para>
@@ -26,10 +26,6 @@ namespace AcDream.Core.Physics;
 internal sealed class FloorGrid
 {
 
-    /// <summary>A square listing at most this many triangles is searched by a plain loop (<see cref="PhysicsConstants.FloorGridLinearScanMax"/>).</summary>
-    public const int LinearScanMax = PhysicsConstants.FloorGridLinearScanMax;
-
-    private const int MaxSide = PhysicsConstants.FloorGridMaxSide;
 
     private readonly FloorTriangle[] _triangles;
     private readonly Layout _layout;
@@ -37,12 +33,12 @@ internal sealed class FloorGrid
     /// <summary>Start of square s's run in <see cref="_items"/>; square s spans [_start[s], _start[s + 1]).</summary>
     private readonly int[] _start;
 
-    /// <summary>Triangle indices, square by square; a run longer than <see cref="LinearScanMax"/> in order of lowest Z.</summary>
+    /// <summary>Triangle indices, square by square; a run longer than <see cref="PhysicsConstants.FloorGridLinearScanMax"/> in order of lowest Z.</summary>
     private readonly int[] _items;
 
     /// <summary>
     /// Start of square s's Z ranges in <see cref="_z"/>, aligned with its run, as <see cref="_start"/>
-    /// (no ranges for a run scanned by a plain loop); empty when no run is longer than <see cref="LinearScanMax"/>.
+    /// (no ranges for a run scanned by a plain loop); empty when no run is longer than <see cref="PhysicsConstants.FloorGridLinearScanMax"/>.
     /// </summary>
     private readonly int[] _zStart;
     private readonly ZRange[] _z;
@@ -55,7 +51,7 @@ internal sealed class FloorGrid
         // About one triangle per square on average; then the finest grid (a binary search on the side)
         // within the entry budget. One square (side 1) lists each triangle once, so it always fits.
         long budget = (long)PhysicsConstants.MaxFloorGridEntriesPerTriangle * triangles.Length;
-        int side = Math.Clamp((int)MathF.Ceiling(MathF.Sqrt(triangles.Length)), 1, MaxSide);
+        int side = Math.Clamp((int)MathF.Ceiling(MathF.Sqrt(triangles.Length)), 1, PhysicsConstants.FloorGridMaxSide);
         var layout = new Layout(min, max, side);
         long entries = layout.CountEntries(triangles);
         if (entries > budget)
@@ -96,7 +92,7 @@ internal sealed class FloorGrid
         int sorted = 0;
         for (int s = 0; s < squares; s++)
         {
-            sorted += start[s + 1] > LinearScanMax ? start[s + 1] : 0;
+            sorted += start[s + 1] > PhysicsConstants.FloorGridLinearScanMax ? start[s + 1] : 0;
             start[s + 1] += start[s];
         }
 
@@ -104,7 +100,7 @@ internal sealed class FloorGrid
         for (int s = 0; s < squares && sorted > 0; s++)
         {
             int count = start[s + 1] - start[s];
-            zStart[s + 1] = zStart[s] + (count > LinearScanMax ? count : 0);
+            zStart[s + 1] = zStart[s] + (count > PhysicsConstants.FloorGridLinearScanMax ? count : 0);
         }
 
         _start = start;
@@ -171,7 +167,7 @@ internal sealed class FloorGrid
         bool found = false;
         float best = float.PositiveInfinity;
         z = 0f;
-        if (run.Length <= LinearScanMax)
+        if (run.Length <= PhysicsConstants.FloorGridLinearScanMax)
         {
             foreach (int t in run)
             {
@@ -283,8 +279,8 @@ internal sealed class FloorGrid
         public Layout(Vector2 min, Vector2 max, int side)
         {
             Vector2 extent = Vector2.Max(max - min, new Vector2(PhysicsConstants.FloorGridMinExtent));
-            Columns = Math.Clamp((int)MathF.Ceiling(extent.X / MathF.Max(extent.X, extent.Y) * side), 1, MaxSide);
-            Rows = Math.Clamp((int)MathF.Ceiling(extent.Y / MathF.Max(extent.X, extent.Y) * side), 1, MaxSide);
+            Columns = Math.Clamp((int)MathF.Ceiling(extent.X / MathF.Max(extent.X, extent.Y) * side), 1, PhysicsConstants.FloorGridMaxSide);
+            Rows = Math.Clamp((int)MathF.Ceiling(extent.Y / MathF.Max(extent.X, extent.Y) * side), 1, PhysicsConstants.FloorGridMaxSide);
             Min = min;
             InverseSize = new Vector2(Columns / extent.X, Rows / extent.Y);
         }

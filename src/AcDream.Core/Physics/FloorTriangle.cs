@@ -10,9 +10,6 @@ namespace AcDream.Core.Physics;
 /// </summary>
 internal readonly struct FloorTriangle
 {
-    /// <summary>Smallest twice-area (m²) of a triangle that carries a floor (<see cref="PhysicsConstants.MinFloorDoubleArea"/>).</summary>
-    public const double MinDoubleArea = PhysicsConstants.MinFloorDoubleArea;
-
     public readonly Vector2 A;
     public readonly Vector2 B;
     public readonly Vector2 C;
@@ -56,7 +53,7 @@ internal readonly struct FloorTriangle
     /// <summary>
     /// Builds the triangle (a, b, c) in landblock-local metres, its Z from <paramref name="plane"/>
     /// (the polygon's plane) or, when null, from its own vertices; or returns false when it cannot
-    /// carry a floor: it faces down, its area seen from above is below <see cref="MinDoubleArea"/>
+    /// carry a floor: it faces down, its area seen from above is below <see cref="PhysicsConstants.MinFloorDoubleArea"/>
     /// (zero-area, collinear, duplicated vertex), or it is a sliver thinner than
     /// <see cref="PhysicsConstants.EdgeTolerance"/> (its whole inside is within the tolerance of its
     /// longest edge, where the neighbouring triangle answers; rounding alone decides its own shape).
@@ -67,7 +64,7 @@ internal readonly struct FloorTriangle
         double acx = (double)c.X - a.X, acy = (double)c.Y - a.Y;
         double doubleArea = (abx * acy) - (aby * acx);
         double longest = Math.Max(Distance(a, b), Math.Max(Distance(b, c), Distance(c, a)));
-        if (!(doubleArea >= MinDoubleArea) || !(doubleArea / longest >= PhysicsConstants.EdgeTolerance))
+        if (!(doubleArea >= PhysicsConstants.MinFloorDoubleArea) || !(doubleArea / longest >= PhysicsConstants.EdgeTolerance))
         {
             triangle = default;
             return false;

@@ -24,7 +24,7 @@ internal static class Geometry
         }
 
         double length = Math.Sqrt((nx * nx) + (ny * ny) + (nz * nz));
-        if (!(length > FloorTriangle.MinDoubleArea))
+        if (!(length > PhysicsConstants.MinFloorDoubleArea))
         {
             return Vector3.Zero;
         }

@@ -60,7 +60,7 @@ public class FloorGridTests
             var grid = new FloorGrid(triangles, min, max);
             string cell = $"seed {seed}, cell {n} ({kind}, {triangles.Length} triangles, {levels.Length} levels, grid of {grid.SquareCount} squares, {grid.EntryCount} entries)";
             grid.EntryCount.Should().BeLessThanOrEqualTo(PhysicsConstants.MaxFloorGridEntriesPerTriangle * triangles.Length, cell);
-            sortedSquares += grid.EntryCount / grid.SquareCount > FloorGrid.LinearScanMax ? 1 : 0;
+            sortedSquares += grid.EntryCount / grid.SquareCount > PhysicsConstants.FloorGridLinearScanMax ? 1 : 0;
 
             for (int k = 0; k < 300; k++)
             {
