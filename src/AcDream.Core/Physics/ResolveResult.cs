@@ -19,12 +19,34 @@ public readonly record struct ResolveResult(
     uint CellId,
     bool IsOnGround)
 {
+    // IsOnGround (bit 0) and Outcome (the bits above) share one field, so the struct has four fields
+    // and the JIT keeps it in registers (promotes it): with five, every answer was copied through
+    // memory with one wide load after narrow stores, a store-forwarding stall on every Resolve.
+    private readonly int _groundAndOutcome = IsOnGround ? 1 : 0;
+
+    /// <summary>
+    /// True exactly when <see cref="Position"/> stands on terrain or a floor: its Z within
+    /// <see cref="PhysicsConstants.GroundTolerance"/> (0.2 mm) of the terrain, or of the floor of
+    /// <see cref="CellId"/> nearest it, under its XY. False when the mover is above the ground (nothing
+    /// under it, a refused move in mid-air, or airborne with step down): the caller's gravity should act.
+    /// The one exception is a mover held because its landblock is not loaded: true, so it does not fall.
+    /// </summary>
+    public bool IsOnGround
+    {
+        get => (_groundAndOutcome & 1) != 0;
+        init => _groundAndOutcome = (_groundAndOutcome & ~1) | (value ? 1 : 0);
+    }
+
     /// <summary>
     /// Why the mover ended where it did: moved, held, or which refusal stopped it. With swept moves,
     /// a move stopped part way reports the refusal that stopped it (and the last accepted position).
     /// </summary>
     /// <value><see cref="ResolveOutcome.Moved"/> by default.</value>
-    public ResolveOutcome Outcome { get; init; }
+    public ResolveOutcome Outcome
+    {
+        get => (ResolveOutcome)(_groundAndOutcome >> 1);
+        init => _groundAndOutcome = (_groundAndOutcome & 1) | ((int)value << 1);
+    }
 
     /// <summary>
     /// Where a surface stopped the move, its unit normal (world axes, pointing towards the mover's
