@@ -90,8 +90,10 @@ public sealed class CellSurface
         var unit = new Quaternion((float)(orientation.X / length), (float)(orientation.Y / length), (float)(orientation.Z / length), (float)(orientation.W / length));
         var transform = new CellTransform(cell, cellStruct, origin, unit);
 
-        _floors = BuildFloors(cell, cellStruct, transform);
+        List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> physics = PlacePhysicsPolygons(cell, cellStruct, transform);
+        _floors = BuildFloors(physics);
         (Portals, _portalShapes) = BuildPortals(cell, cellId, envCell, cellStruct, transform);
+        Walls = CellWalls.Build(cell, physics, _portalShapes);
 
         if (_floors.Length > 0)
         {
@@ -121,6 +123,9 @@ public sealed class CellSurface
     internal Vector2 FloorMin { get; }
 
     internal Vector2 FloorMax { get; }
+
+    /// <summary>The cell's walls for the body effect (every physics polygon that is not a floor or a doorway's cover).</summary>
+    internal CellWalls Walls { get; }
 
     /// <summary>Prepared portal geometry, aligned with <see cref="Portals"/>.</summary>
     internal ReadOnlySpan<PortalShape> PortalShapes => _portalShapes;
@@ -236,17 +241,28 @@ public sealed class CellSurface
         return result;
     }
 
-    private static FloorTriangle[] BuildFloors(string cell, CellStruct cellStruct, CellTransform transform)
+    /// <summary>The physics polygons placed in landblock-local space, in id order, each with its winding normal (zero when it has no area).</summary>
+    private static List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> PlacePhysicsPolygons(string cell, CellStruct cellStruct, CellTransform transform)
     {
         Dictionary<ushort, Polygon> polygons = cellStruct.PhysicsPolygons
             ?? throw new ArgumentNullException(nameof(cellStruct), $"{cell}: cellStruct.PhysicsPolygons is null.");
-        var triangles = new List<FloorTriangle>();
         var keys = new List<ushort>(polygons.Keys);
         keys.Sort();
+        var placed = new List<(ushort, Vector3[], Vector3)>(keys.Count);
         foreach (ushort key in keys)
         {
             Vector3[] v = transform.Polygon(polygons[key], $"physics polygon {key}");
-            Vector3 normal = Geometry.NewellNormal(v, v[0]);
+            placed.Add((key, v, Geometry.NewellNormal(v, v[0])));
+        }
+
+        return placed;
+    }
+
+    private static FloorTriangle[] BuildFloors(List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> physics)
+    {
+        var triangles = new List<FloorTriangle>();
+        foreach ((_, Vector3[] v, Vector3 normal) in physics)
+        {
             if (normal.Z < PhysicsConstants.FloorZ)
             {
                 continue; // a wall, a ceiling, too steep, or no area

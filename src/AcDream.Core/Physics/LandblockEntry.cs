@@ -1,3 +1,5 @@
+using System.Numerics;
+
 namespace AcDream.Core.Physics;
 
 /// <summary>
@@ -43,7 +45,8 @@ internal sealed class LandblockEntry
             PortalTargets[i] = targets;
         }
 
-        EntryBuckets = BuildEntryBuckets(cells);
+        EntryBuckets = BuildBuckets(cells, static c => c.HasFloor ? (c.FloorMin, c.FloorMax) : null);
+        WallBuckets = BuildBuckets(cells, static c => c.Walls.Polygons.Length > 0 ? (c.Walls.Min, c.Walls.Max) : null);
     }
 
     public int X { get; }
@@ -64,22 +67,28 @@ internal sealed class LandblockEntry
     /// </summary>
     public int[][] EntryBuckets { get; }
 
+    /// <summary>
+    /// Per outdoor cell: the indices of the cells whose walls' bounds overlap it (clamped to the
+    /// landblock). A body outdoors meets only these cells' walls.
+    /// </summary>
+    public int[][] WallBuckets { get; }
+
     public bool TryGetCellIndex(uint cellId, out int index) => _indexById.TryGetValue(cellId, out index);
 
-    private static int[][] BuildEntryBuckets(CellSurface[] cells)
+    /// <summary>Per outdoor cell, the cells whose bounds (from <paramref name="bounds"/>; null: none) overlap it.</summary>
+    private static int[][] BuildBuckets(CellSurface[] cells, Func<CellSurface, (Vector2 Min, Vector2 Max)?> bounds)
     {
         const int n = PhysicsConstants.CellsPerSide;
         var lists = new List<int>?[n * n];
         for (int i = 0; i < cells.Length; i++)
         {
-            CellSurface cell = cells[i];
-            if (!cell.HasFloor)
+            if (bounds(cells[i]) is not (Vector2 min, Vector2 max))
             {
                 continue;
             }
 
-            int cx0 = CellIds.OutdoorColumn(cell.FloorMin.X), cx1 = CellIds.OutdoorColumn(cell.FloorMax.X);
-            int cy0 = CellIds.OutdoorColumn(cell.FloorMin.Y), cy1 = CellIds.OutdoorColumn(cell.FloorMax.Y);
+            int cx0 = CellIds.OutdoorColumn(min.X), cx1 = CellIds.OutdoorColumn(max.X);
+            int cy0 = CellIds.OutdoorColumn(min.Y), cy1 = CellIds.OutdoorColumn(max.Y);
             for (int cx = cx0; cx <= cx1; cx++)
             {
                 for (int cy = cy0; cy <= cy1; cy++)

@@ -11,13 +11,14 @@ public readonly record struct MovementOptions
 {
     private readonly float? _stepDownHeight;
     private readonly float? _sweepStepLength;
+    private readonly MoverBody? _body;
 
     /// <summary>No effects: the spec's literal engine.</summary>
     public static MovementOptions Literal => default;
 
     /// <summary>
     /// What a player uses: step down 1.5 m, the walkable-slope limit, sweeps of 0.48 m (a player's
-    /// sphere radius) and entry through doors only.
+    /// sphere radius), entry through doors only, and the player's body (<see cref="MoverBody.Player"/>).
     /// </summary>
     public static MovementOptions Player => new()
     {
@@ -25,6 +26,7 @@ public readonly record struct MovementOptions
         WalkableSlope = true,
         SweepStepLength = 0.48f,
         DoorsOnly = true,
+        Body = MoverBody.Player,
     };
 
     /// <summary>
@@ -73,4 +75,25 @@ public readonly record struct MovementOptions
     /// a floor lies under the mover.
     /// </summary>
     public bool DoorsOnly { get; init; }
+
+    /// <summary>
+    /// The mover's body: an upright cylinder of <see cref="MoverBody.Radius"/> and
+    /// <see cref="MoverBody.Height"/> standing on the feet. Its horizontal move is swept against the
+    /// walls of the cells around it (every physics polygon that is not a floor or a doorway's cover,
+    /// where it reaches between the step height above the feet and the body's top) in closed form,
+    /// and slides along them: it stops at contact and the rest of the move continues along the wall,
+    /// up to <see cref="PhysicsConstants.MaxBodyContacts"/> walls per call; a concave corner stops it.
+    /// Outdoors it meets the walls of buildings' cells, so it enters a building only through a doorway.
+    /// With <see cref="WalkableSlope"/>, a slope too steep to climb slides it along the slope's contour.
+    /// The cell the mover ends in is decided by its centre, as for a point. See <c>docs/physics.md</c>.
+    /// </summary>
+    /// <value>Null (the default): off, the mover is a point at its feet.</value>
+    /// <exception cref="ArgumentOutOfRangeException">On set: a body with a zero radius or height (<c>default(MoverBody)</c>).</exception>
+    public MoverBody? Body
+    {
+        get => _body;
+        init => _body = value is not MoverBody b || b.IsValid
+            ? value
+            : throw new ArgumentOutOfRangeException(nameof(Body), value, "Body must have a radius and a height > 0 m (default(MoverBody) has neither), or be null for off.");
+    }
 }

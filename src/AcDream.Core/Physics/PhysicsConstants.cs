@@ -134,4 +134,35 @@ public static class PhysicsConstants
     /// Real cells list at most about 11 per square.
     /// </summary>
     internal const int FloorGridLinearScanMax = 16;
+
+    /// <summary>
+    /// Body: how far, metres, a physics polygon's vertices may lie from a portal's plane for the
+    /// polygon to count as the doorway's cover (not a wall). Real doorways' covers lie in the plane.
+    /// </summary>
+    public const float DoorwayCoverTolerance = 0.01f;
+
+    /// <summary>
+    /// Body: a body within this distance, metres, of a wall (beyond its radius) counts as touching it:
+    /// a move into it is stopped at once and slides. Keeps a body resting against a wall from being
+    /// pushed through it by rounding.
+    /// </summary>
+    public const float ContactTolerance = 0.0001f;
+
+    /// <summary>Body: the most walls one call slides along (the contacts of collide-and-slide).</summary>
+    public const int MaxBodyContacts = 4;
+
+    /// <summary>
+    /// Body: the most cells whose walls one call gathers. Beyond it the farthest portal neighbours are
+    /// not gathered; real cells never come near.
+    /// </summary>
+    public const int MaxBodyCells = 32;
+
+    /// <summary>Body: the smallest gap, metres, the body keeps from walls beyond its radius (the world frame's rounding is added to it).</summary>
+    public const float BodySkin = 0.00001f;
+
+    /// <summary>
+    /// The most vertices a wall polygon may have (the body cuts each on the stack). Real physics
+    /// polygons have 3 to 8; a cell with a longer non-floor polygon is rejected when built.
+    /// </summary>
+    public const int MaxWallPolygonVertices = 64;
 }

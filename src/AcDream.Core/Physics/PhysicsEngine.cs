@@ -39,6 +39,7 @@ public sealed class PhysicsEngine
     private readonly WorldFrame _frame;
     private readonly OutdoorResolver _outdoor;
     private readonly IndoorResolver _indoor;
+    private readonly BodyPlanner _body;
 
     /// <summary>An engine whose world frame is global: world = landblock X·192 + landblock-local metres.</summary>
     public PhysicsEngine()
@@ -63,6 +64,7 @@ public sealed class PhysicsEngine
         var portals = new PortalTraversal(_registry);
         _outdoor = new OutdoorResolver(_registry, frame, portals);
         _indoor = new IndoorResolver(_registry, frame, portals);
+        _body = new BodyPlanner(_registry, frame);
     }
 
     /// <summary>Number of registered landblocks.</summary>
@@ -267,6 +269,11 @@ public sealed class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var move = new Vector2(delta.X, delta.Y);
+        if (options.Body.HasValue)
+        {
+            return ResolveWithBody(currentPos, currentCellId, move, stepUpHeight, in options, contourLeft: true);
+        }
+
         if (options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep)
         {
             return Sweep(currentPos, currentCellId, move, stepUpHeight, in options, sweep);
@@ -274,6 +281,108 @@ public sealed class PhysicsEngine
 
         var query = new MoveQuery(currentPos, currentCellId, move, stepUpHeight, in options);
         return Step(ref query);
+    }
+
+    /// <summary>A point's move: swept in sub-steps when <see cref="MovementOptions.SweepStepLength"/> asks, else one step.</summary>
+    private ResolveResult PointMove(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options)
+    {
+        if (options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep)
+        {
+            return Sweep(pos, cellId, move, stepUp, in options, sweep);
+        }
+
+        var query = new MoveQuery(pos, cellId, move, stepUp, in options);
+        return Step(ref query);
+    }
+
+    /// <summary>
+    /// The body's move: its path among the walls (<see cref="BodyPlanner"/>), walked leg by leg as
+    /// point moves, so floors, cells, steps and doorways are decided as for a point. A path with no
+    /// contact is the point move itself. With walkable slope, a leg refused as too steep slides along
+    /// the slope's contour once (<paramref name="contourLeft"/>).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve, so a call without a body pays nothing for it
+    private ResolveResult ResolveWithBody(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, bool contourLeft)
+    {
+        Span<Vector2> points = stackalloc Vector2[PhysicsConstants.MaxBodyContacts + 2];
+        var path = default(BodySweep.Path);
+        if (move == Vector2.Zero || !_body.Plan(pos, cellId, move, stepUp, options.Body!.Value, points, ref path, out _, out _) || path.Contacts == 0)
+        {
+            ResolveResult free = PointMove(pos, cellId, move, stepUp, in options);
+            return contourLeft && free.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope
+                ? AlongContour(pos, cellId, move, stepUp, in options, free)
+                : free;
+        }
+
+        var wall = new Vector3(path.Normal.X, path.Normal.Y, 0f);
+        if (path.Count == 1)
+        {
+            ResolveResult stay = Stay(pos, cellId, stepUp, in options);
+            return stay.Outcome == ResolveOutcome.Moved ? stay with { Outcome = ResolveOutcome.Wall, SurfaceNormal = wall } : stay;
+        }
+
+        ResolveResult result = default;
+        Vector3 at = pos;
+        uint cell = cellId;
+        for (int i = 1; i < path.Count; i++)
+        {
+            Vector2 leg = points[i] - points[i - 1];
+            ResolveResult next = PointMove(at, cell, leg, stepUp, in options);
+            if (next.IsRefused)
+            {
+                if (contourLeft && next.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope)
+                {
+                    return AlongContour(at, cell, leg, stepUp, in options, next);
+                }
+
+                return i == 1 ? next : result with { Outcome = next.Outcome, SurfaceNormal = next.SurfaceNormal };
+            }
+
+            (result, at, cell) = (next, next.Position, next.CellId);
+        }
+
+        return result.Outcome == ResolveOutcome.Moved ? result with { Outcome = ResolveOutcome.Slid, SurfaceNormal = wall } : result;
+    }
+
+    /// <summary>
+    /// Walkable slope with a body: <paramref name="refused"/> was too steep to climb; the move goes on
+    /// with its uphill part taken out (along the slope's contour), or the refusal stands.
+    /// </summary>
+    private ResolveResult AlongContour(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, ResolveResult refused)
+    {
+        var downhill = new Vector2(refused.SurfaceNormal.X, refused.SurfaceNormal.Y);
+        float length = downhill.Length();
+        if (length == 0f)
+        {
+            return refused;
+        }
+
+        downhill /= length;
+        float uphill = -Vector2.Dot(move, downhill);
+        Vector2 contour = uphill > 0f ? move + (downhill * uphill) : move;
+        if (contour.LengthSquared() < PhysicsConstants.ContactTolerance * PhysicsConstants.ContactTolerance)
+        {
+            return refused;
+        }
+
+        ResolveResult along = ResolveWithBody(pos, cellId, contour, stepUp, in options, contourLeft: false);
+        return along.IsRefused
+            ? refused
+            : along with { Outcome = ResolveOutcome.Slid, SurfaceNormal = refused.SurfaceNormal };
+    }
+
+    /// <summary>
+    /// A body stopped at once by a wall stays where it is: the answer of not moving, with the refusal
+    /// ground rule (<see cref="Answers.Refuse"/>): without step down, feet more than the ground tolerance
+    /// above the ground stay in the air.
+    /// </summary>
+    private ResolveResult Stay(Vector3 pos, uint cellId, float stepUp, in MovementOptions options)
+    {
+        ResolveResult stay = PointMove(pos, cellId, Vector2.Zero, stepUp, in options);
+        return options.StepDownHeight is null && stay.IsOnGround && stay.Outcome == ResolveOutcome.Moved
+            && pos.Z - stay.Position.Z > PhysicsConstants.GroundTolerance
+            ? stay with { Position = stay.Position with { Z = pos.Z }, IsOnGround = false }
+            : stay;
     }
 
     /// <summary>Equal sub-steps no longer than <paramref name="sweep"/>, stopping at the first refused one, whose outcome the answer reports.</summary>

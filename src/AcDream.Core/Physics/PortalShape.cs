@@ -26,6 +26,11 @@ internal sealed class PortalShape
 
     public PortalKind Kind { get; }
 
+    /// <summary>Bounds of the polygon seen from above, landblock-local metres.</summary>
+    public Vector2 BoundsMin { get; private init; }
+
+    public Vector2 BoundsMax { get; private init; }
+
     /// <summary>Centroid (mean of the vertices).</summary>
     public Vector3 Origin { get; }
 
@@ -61,10 +66,17 @@ internal sealed class PortalShape
         }
 
         origin /= vertices.Length;
+        Vector2 boundsMin = new(float.MaxValue), boundsMax = new(float.MinValue);
+        foreach (Vector3 v in vertices)
+        {
+            boundsMin = Vector2.Min(boundsMin, new Vector2(v.X, v.Y));
+            boundsMax = Vector2.Max(boundsMax, new Vector2(v.X, v.Y));
+        }
+
         Vector3 normal = Geometry.NewellNormal(vertices, origin);
         if (normal == Vector3.Zero)
         {
-            return new PortalShape(PortalKind.Degenerate, origin, Vector3.Zero, default, 0f, 0f, zMin, zMax, []);
+            return new PortalShape(PortalKind.Degenerate, origin, Vector3.Zero, default, 0f, 0f, zMin, zMax, []) { BoundsMin = boundsMin, BoundsMax = boundsMax };
         }
 
         Vector3 outNormal = cellOnPositiveSide ? -normal : normal;
@@ -76,7 +88,7 @@ internal sealed class PortalShape
                 outline[i] = new Vector2(vertices[i].X, vertices[i].Y);
             }
 
-            return new PortalShape(PortalKind.Horizontal, origin, outNormal, default, 0f, 0f, zMin, zMax, outline);
+            return new PortalShape(PortalKind.Horizontal, origin, outNormal, default, 0f, 0f, zMin, zMax, outline) { BoundsMin = boundsMin, BoundsMax = boundsMax };
         }
 
         var tangent = Vector2.Normalize(new Vector2(-outNormal.Y, outNormal.X));
@@ -88,7 +100,7 @@ internal sealed class PortalShape
             tMax = MathF.Max(tMax, t);
         }
 
-        return new PortalShape(PortalKind.Vertical, origin, outNormal, tangent, tMin, tMax, zMin, zMax, []);
+        return new PortalShape(PortalKind.Vertical, origin, outNormal, tangent, tMin, tMax, zMin, zMax, []) { BoundsMin = boundsMin, BoundsMax = boundsMax };
     }
 
     /// <summary>
@@ -161,6 +173,35 @@ internal sealed class PortalShape
     /// <see cref="PhysicsConstants.EdgeTolerance"/> count as inside).
     /// </summary>
     public bool ContainsXY(float x, float y) => Geometry.PolygonContains(_outline, new Vector2(x, y), PhysicsConstants.EdgeTolerance);
+
+    /// <summary>
+    /// Whether a physics polygon (landblock-local vertices, <paramref name="centre"/> their mean) covers
+    /// this portal: every vertex within <see cref="PhysicsConstants.DoorwayCoverTolerance"/> of the
+    /// portal's plane and the centre inside the opening. Such a polygon is the doorway itself, not a wall.
+    /// </summary>
+    public bool Covers(ReadOnlySpan<Vector3> polygon, Vector3 centre)
+    {
+        if (Kind == PortalKind.Degenerate)
+        {
+            return false;
+        }
+
+        foreach (Vector3 v in polygon)
+        {
+            if (MathF.Abs(Vector3.Dot(OutNormal, v - Origin)) > PhysicsConstants.DoorwayCoverTolerance)
+            {
+                return false;
+            }
+        }
+
+        if (Kind == PortalKind.Horizontal)
+        {
+            return ContainsXY(centre.X, centre.Y);
+        }
+
+        float along = Vector2.Dot(Tangent, new Vector2(centre.X - Origin.X, centre.Y - Origin.Y));
+        return along >= TMin && along <= TMax && centre.Z >= ZMin && centre.Z <= ZMax;
+    }
 
     /// <summary>For a horizontal portal: Z of its plane at (x, y).</summary>
     public float PlaneZ(float x, float y) =>

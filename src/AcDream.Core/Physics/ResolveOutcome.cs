@@ -6,6 +6,9 @@ public enum ResolveOutcome : byte
     /// <summary>The move was made (on the ground, or airborne with step down).</summary>
     Moved = 0,
 
+    /// <summary>The body touched a wall and moved on along it (or stopped at it part way): moved; the wall's normal is reported.</summary>
+    Slid,
+
     /// <summary>The land under the mover is not loaded: it is held where it is, on the ground.</summary>
     Held,
 

@@ -1,0 +1,140 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Plans a body's move: finds the landblock frame the mover is in, gathers the walls near the move
+/// (<see cref="WallSet"/>), and slides the body among them (<see cref="BodySweep"/>). The path it
+/// returns is then walked leg by leg by the point resolvers, which decide floors, cells and steps.
+/// </summary>
+internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
+{
+    /// <summary>
+    /// The path of a body of <paramref name="body"/> with its feet at <paramref name="position"/>
+    /// (world) in <paramref name="cellId"/> moving by <paramref name="delta"/>; the path's points (in <paramref name="points"/>) are
+    /// landblock-local in landblock (<paramref name="lbX"/>, <paramref name="lbY"/>). False when the
+    /// mover's landblock is not loaded (no walls are known: the point move decides).
+    /// </summary>
+    public bool Plan(Vector3 position, uint cellId, Vector2 delta, float stepUp, MoverBody body, Span<Vector2> points, ref BodySweep.Path path, out int lbX, out int lbY)
+    {
+        Vector2 local;
+        if (CellIds.IsIndoor(cellId))
+        {
+            (lbX, lbY) = (CellIds.LandblockX(cellId), CellIds.LandblockY(cellId));
+            local = frame.Representable(lbX, lbY, new Vector2(position.X, position.Y) - frame.Origin(lbX, lbY));
+        }
+        else
+        {
+            frame.Locate(position, cellId, out lbX, out lbY, out local);
+        }
+
+        LandblockEntry? entry = registry.Get(lbX, lbY);
+        if (entry is null || (CellIds.IsIndoor(cellId) && !entry.TryGetCellIndex(cellId, out _)))
+        {
+            return false;
+        }
+
+        float radius = body.Radius + Skin(lbX, lbY, local, delta.Length() + body.Radius);
+        Span<int> cells = stackalloc int[PhysicsConstants.MaxBodyCells];
+        var walls = new WallSet(cells, local, delta.Length() + radius + PhysicsConstants.ContactTolerance);
+        int slot = walls.AddLandblock(entry, Vector2.Zero);
+        if (CellIds.IsIndoor(cellId))
+        {
+            entry.TryGetCellIndex(cellId, out int cellIndex);
+            GatherIndoors(ref walls, slot, entry, cellIndex);
+        }
+        else
+        {
+            GatherOutdoors(ref walls, slot, entry);
+            GatherAcrossSeams(ref walls, lbX, lbY);
+        }
+
+        BodySweep.Slide(in walls, local, delta, radius, position.Z + stepUp, position.Z + body.Height, points, ref path);
+        return true;
+    }
+
+    /// <summary>
+    /// The gap the body keeps from walls beyond its radius: <see cref="PhysicsConstants.BodySkin"/>
+    /// plus twice the float spacing of the coordinates it may reach, in the world frame and the
+    /// landblock's, so rounding the answer to the world frame never puts the body into a wall.
+    /// </summary>
+    private float Skin(int lbX, int lbY, Vector2 local, float reach)
+    {
+        Vector2 world = frame.Origin(lbX, lbY) + local;
+        float largest = MathF.Max(MathF.Max(MathF.Abs(world.X), MathF.Abs(world.Y)), MathF.Max(MathF.Abs(local.X), MathF.Abs(local.Y))) + reach;
+        return PhysicsConstants.BodySkin + (2f * (MathF.BitIncrement(largest) - largest));
+    }
+
+    /// <summary>The mover's cell and every cell reached from it through a portal whose bounds the move's box overlaps, breadth first.</summary>
+    private static void GatherIndoors(ref WallSet walls, int slot, LandblockEntry entry, int cellIndex)
+    {
+        walls.TryAdd(slot, cellIndex);
+        for (int i = 0; i < walls.Count; i++)
+        {
+            int cell = walls.At(i).Cell;
+            ReadOnlySpan<PortalShape> shapes = entry.Cells[cell].PortalShapes;
+            int[] targets = entry.PortalTargets[cell];
+            for (int k = 0; k < shapes.Length; k++)
+            {
+                if (targets[k] >= 0 && walls.Overlaps(shapes[k].BoundsMin, shapes[k].BoundsMax, Vector2.Zero) && !walls.TryAdd(slot, targets[k]))
+                {
+                    return; // full: the nearest cells are in
+                }
+            }
+        }
+    }
+
+    /// <summary>The cells of a landblock listed over the outdoor squares the move's box covers, whose walls the box overlaps.</summary>
+    private static void GatherOutdoors(ref WallSet walls, int slot, LandblockEntry entry)
+    {
+        (_, Vector2 offset) = walls.Slot(slot);
+        Vector2 min = walls.BoxMin - offset, max = walls.BoxMax - offset;
+        if (max.X < -PhysicsConstants.LandblockSize || max.Y < -PhysicsConstants.LandblockSize
+            || min.X > 2 * PhysicsConstants.LandblockSize || min.Y > 2 * PhysicsConstants.LandblockSize)
+        {
+            return;
+        }
+
+        int x0 = CellIds.OutdoorColumn(min.X), x1 = CellIds.OutdoorColumn(max.X);
+        int y0 = CellIds.OutdoorColumn(min.Y), y1 = CellIds.OutdoorColumn(max.Y);
+        for (int cx = x0; cx <= x1; cx++)
+        {
+            for (int cy = y0; cy <= y1; cy++)
+            {
+                foreach (int cell in entry.WallBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
+                {
+                    CellWalls cellWalls = entry.Cells[cell].Walls;
+                    if (walls.Overlaps(cellWalls.Min, cellWalls.Max, offset) && !walls.TryAdd(slot, cell))
+                    {
+                        return;
+                    }
+                }
+            }
+        }
+    }
+
+    /// <summary>Outdoors near a seam: the neighbour landblocks the move's box reaches into, each in its offset.</summary>
+    private void GatherAcrossSeams(ref WallSet walls, int lbX, int lbY)
+    {
+        const float size = PhysicsConstants.LandblockSize;
+        int dx = walls.BoxMin.X < 0f ? -1 : walls.BoxMax.X > size ? 1 : 0;
+        int dy = walls.BoxMin.Y < 0f ? -1 : walls.BoxMax.Y > size ? 1 : 0;
+        Neighbour(ref walls, lbX, lbY, dx, 0);
+        Neighbour(ref walls, lbX, lbY, 0, dy);
+        if (dx != 0 && dy != 0)
+        {
+            Neighbour(ref walls, lbX, lbY, dx, dy);
+        }
+    }
+
+    private void Neighbour(ref WallSet walls, int lbX, int lbY, int dx, int dy)
+    {
+        if ((dx == 0 && dy == 0) || !CellIds.IsInWorld(lbX + dx, lbY + dy) || registry.Get(lbX + dx, lbY + dy) is not LandblockEntry neighbour)
+        {
+            return;
+        }
+
+        int slot = walls.AddLandblock(neighbour, new Vector2(dx * PhysicsConstants.LandblockSize, dy * PhysicsConstants.LandblockSize));
+        GatherOutdoors(ref walls, slot, neighbour);
+    }
+}

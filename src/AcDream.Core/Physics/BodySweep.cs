@@ -1,0 +1,232 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The body's horizontal move among walls, in closed form: an upright cylinder of radius r sweeps
+/// from p along d; each wall polygon, cut to the height band the cylinder meets walls in (from the
+/// step height above the feet to the top), seen from above is a set of edges, and the cylinder
+/// touches an edge when its centre comes within r of it. The time of impact against an edge is the
+/// earliest of the centre's line reaching the edge's two offset lines (within the edge) and its two
+/// end circles: no sub-steps, so nothing is skipped at any speed or wall thickness. At contact the
+/// rest of the move continues along the wall (projected onto it), up to
+/// <see cref="PhysicsConstants.MaxBodyContacts"/> contacts; a second wall the slide would push into
+/// (a concave corner) stops it. All in one landblock's frame (landblock-local metres); allocation-free.
+/// </summary>
+internal static class BodySweep
+{
+    /// <summary>What a body's path holds besides its corner points: how many corners, and what it touched.</summary>
+    public struct Path
+    {
+        /// <summary>How many corner points are used (1 + legs); the first is the start.</summary>
+        public int Count;
+
+        /// <summary>Walls touched.</summary>
+        public int Contacts;
+
+        /// <summary>The last wall touched: its unit normal seen from above, pointing at the body.</summary>
+        public Vector2 Normal;
+    }
+
+    /// <summary>
+    /// Slides a body of contact radius <paramref name="radius"/> from <paramref name="p"/> along
+    /// <paramref name="d"/> among the walls of <paramref name="walls"/> in the band
+    /// [<paramref name="zLow"/>, <paramref name="zHigh"/>], writing the path's corners to
+    /// <paramref name="points"/> (landblock-local; room for <see cref="PhysicsConstants.MaxBodyContacts"/> + 2).
+    /// </summary>
+    public static void Slide(in WallSet walls, Vector2 p, Vector2 d, float radius, float zLow, float zHigh, Span<Vector2> points, ref Path path)
+    {
+        points[0] = p;
+        path.Count = 1;
+        Vector2 position = p, rest = d, previous = default;
+        for (int contact = 0; contact <= PhysicsConstants.MaxBodyContacts; contact++)
+        {
+            if (rest == Vector2.Zero)
+            {
+                break;
+            }
+
+            float t = 1f;
+            Vector2 normal = default;
+            if (contact < PhysicsConstants.MaxBodyContacts)
+            {
+                walls.Sweep(position, rest, radius, zLow, zHigh, ref t, ref normal);
+            }
+            else
+            {
+                rest = Vector2.Zero; // out of contacts: stop at the last one
+                break;
+            }
+
+            if (t >= 1f)
+            {
+                position += rest;
+                points[path.Count++] = position;
+                break;
+            }
+
+            if (t > 0f)
+            {
+                position += rest * t;
+                points[path.Count++] = position;
+            }
+
+            path.Contacts++;
+            path.Normal = normal;
+            rest *= 1f - t;
+            rest -= Vector2.Dot(rest, normal) * normal; // along the wall: never longer than before
+            if (contact > 0 && Vector2.Dot(rest, previous) < 0f)
+            {
+                break; // into the wall touched before: a concave corner stops the body
+            }
+
+            previous = normal;
+        }
+    }
+
+    /// <summary>
+    /// Earliest fraction <paramref name="t"/> (below the one given) of the move p → p + d at which a
+    /// disc of <paramref name="radius"/> centred on the moving point touches the segment a–b, and the
+    /// unit normal from the segment to the centre there. A disc already touching (within
+    /// <see cref="PhysicsConstants.ContactTolerance"/>) and moving towards it is stopped at t = 0; one
+    /// moving away or along it is free.
+    /// </summary>
+    public static void SweepSegment(Vector2 p, Vector2 d, Vector2 a, Vector2 b, float radius, ref float t, ref Vector2 normal)
+    {
+        Vector2 ab = b - a;
+        float lengthSquared = ab.LengthSquared();
+        float u0 = lengthSquared > 0f ? Math.Clamp(Vector2.Dot(p - a, ab) / lengthSquared, 0f, 1f) : 0f;
+        Vector2 away = p - (a + (ab * u0));
+        float distanceSquared = away.LengthSquared();
+        float touch = radius + PhysicsConstants.ContactTolerance;
+        if (distanceSquared < touch * touch)
+        {
+            Vector2 n = distanceSquared > 0f ? away / MathF.Sqrt(distanceSquared) : OffsetNormal(ab, -d);
+            if (Vector2.Dot(d, n) < 0f && t > 0f)
+            {
+                (t, normal) = (0f, n);
+            }
+
+            return;
+        }
+
+        if (lengthSquared > 0f)
+        {
+            Vector2 n = Vector2.Normalize(new Vector2(-ab.Y, ab.X));
+            float s0 = Vector2.Dot(p - a, n);
+            if (s0 < 0f)
+            {
+                (n, s0) = (-n, -s0);
+            }
+
+            float approach = -Vector2.Dot(d, n);
+            if (approach > 0f && s0 >= radius)
+            {
+                float hit = (s0 - radius) / approach;
+                if (hit < t)
+                {
+                    float u = Vector2.Dot(p + (d * hit) - a, ab) / lengthSquared;
+                    if (u >= 0f && u <= 1f)
+                    {
+                        (t, normal) = (hit, n);
+                    }
+                }
+            }
+        }
+
+        SweepPoint(p, d, a, radius, ref t, ref normal);
+        SweepPoint(p, d, b, radius, ref t, ref normal);
+    }
+
+    /// <summary>As <see cref="SweepSegment"/> for a single point (a segment's end): a ray against a circle.</summary>
+    private static void SweepPoint(Vector2 p, Vector2 d, Vector2 c, float radius, ref float t, ref Vector2 normal)
+    {
+        Vector2 m = p - c;
+        float b = Vector2.Dot(m, d);
+        if (b >= 0f)
+        {
+            return; // moving away from it
+        }
+
+        float a = d.LengthSquared();
+        float cc = m.LengthSquared() - (radius * radius);
+        float discriminant = (b * b) - (a * cc);
+        if (discriminant < 0f)
+        {
+            return;
+        }
+
+        float hit = MathF.Max((-b - MathF.Sqrt(discriminant)) / a, 0f);
+        if (hit < t)
+        {
+            Vector2 at = p + (d * hit) - c;
+            float length = at.Length();
+            if (length > 0f)
+            {
+                (t, normal) = (hit, at / length);
+            }
+        }
+    }
+
+    /// <summary>The unit normal of a segment along <paramref name="ab"/> on the side <paramref name="towards"/> points to.</summary>
+    private static Vector2 OffsetNormal(Vector2 ab, Vector2 towards)
+    {
+        Vector2 n = ab == Vector2.Zero ? towards : new Vector2(-ab.Y, ab.X);
+        if (n == Vector2.Zero)
+        {
+            return Vector2.UnitX;
+        }
+
+        n = Vector2.Normalize(n);
+        return Vector2.Dot(n, towards) < 0f ? -n : n;
+    }
+
+    /// <summary>
+    /// Sweeps against one wall polygon (its vertices plus <paramref name="offset"/> in the move's
+    /// frame), cut to the band first: the part of the polygon between the two heights, seen from above.
+    /// </summary>
+    public static void SweepPolygon(
+        ReadOnlySpan<Vector3> vertices, Vector2 offset, Vector2 p, Vector2 d, float radius, float zLow, float zHigh,
+        ref float t, ref Vector2 normal)
+    {
+        Span<Vector3> low = stackalloc Vector3[2 * vertices.Length]; // a cut adds at most one vertex per edge
+        int lowCount = Clip(vertices, low, zLow, keepAbove: true);
+        if (lowCount == 0)
+        {
+            return;
+        }
+
+        Span<Vector3> band = stackalloc Vector3[2 * lowCount];
+        int count = Clip(low[..lowCount], band, zHigh, keepAbove: false);
+        for (int i = 0, j = count - 1; i < count; j = i++)
+        {
+            var a = new Vector2(band[j].X + offset.X, band[j].Y + offset.Y);
+            var b = new Vector2(band[i].X + offset.X, band[i].Y + offset.Y);
+            SweepSegment(p, d, a, b, radius, ref t, ref normal);
+        }
+    }
+
+    /// <summary>Sutherland–Hodgman against the plane z = <paramref name="z"/>, keeping the side named.</summary>
+    private static int Clip(ReadOnlySpan<Vector3> input, Span<Vector3> output, float z, bool keepAbove)
+    {
+        int count = 0;
+        for (int i = 0; i < input.Length; i++)
+        {
+            Vector3 current = input[i], next = input[(i + 1) % input.Length];
+            float dc = keepAbove ? current.Z - z : z - current.Z;
+            float dn = keepAbove ? next.Z - z : z - next.Z;
+            if (dc >= 0f)
+            {
+                output[count++] = current;
+            }
+
+            if ((dc >= 0f) != (dn >= 0f))
+            {
+                float s = dc / (dc - dn);
+                output[count++] = Vector3.Lerp(current, next, s) with { Z = z };
+            }
+        }
+
+        return count;
+    }
+}

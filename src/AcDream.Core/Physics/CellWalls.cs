@@ -1,0 +1,112 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// One wall of a cell for the body: a physics polygon that is not a floor, landblock-local, with
+/// its height range and its bounds seen from above. Its vertices are a slice of
+/// <see cref="CellWalls.Vertices"/>.
+/// </summary>
+internal readonly record struct WallPolygon(int First, int Count, float ZMin, float ZMax, Vector2 Min, Vector2 Max);
+
+/// <summary>
+/// The walls of one cell, built once when the cell is: every physics polygon that is not a floor
+/// (walls, ceilings, steep faces), except those that cover one of the cell's own portals (some
+/// doorways carry a solid physics polygon in the opening), in landblock-local metres.
+/// </summary>
+internal sealed class CellWalls
+{
+    /// <summary>No walls.</summary>
+    public static readonly CellWalls None = new([], []);
+
+    private CellWalls(WallPolygon[] polygons, Vector3[] vertices)
+    {
+        Polygons = polygons;
+        Vertices = vertices;
+        if (polygons.Length == 0)
+        {
+            Min = new Vector2(float.MaxValue);
+            Max = new Vector2(float.MinValue);
+            return;
+        }
+
+        Vector2 min = polygons[0].Min, max = polygons[0].Max;
+        foreach (WallPolygon w in polygons)
+        {
+            min = Vector2.Min(min, w.Min);
+            max = Vector2.Max(max, w.Max);
+        }
+
+        (Min, Max) = (min, max);
+    }
+
+    public WallPolygon[] Polygons { get; }
+
+    public Vector3[] Vertices { get; }
+
+    /// <summary>Bounds of all the walls seen from above (empty when there are none).</summary>
+    public Vector2 Min { get; }
+
+    public Vector2 Max { get; }
+
+    /// <summary>
+    /// Builds the walls from the placed physics polygons (each with its winding normal), leaving out
+    /// floors and any polygon that lies in the plane of one of <paramref name="portals"/> with its
+    /// centre inside the opening.
+    /// </summary>
+    /// <exception cref="ArgumentException">A wall polygon has more than <see cref="PhysicsConstants.MaxWallPolygonVertices"/> vertices.</exception>
+    public static CellWalls Build(string cell, List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> polygons, PortalShape[] portals)
+    {
+        var walls = new List<WallPolygon>();
+        var vertices = new List<Vector3>();
+        foreach ((ushort id, Vector3[] v, Vector3 normal) in polygons)
+        {
+            if (normal == Vector3.Zero || normal.Z >= PhysicsConstants.FloorZ || CoversPortal(v, portals))
+            {
+                continue; // no area, a floor, or a doorway's cover
+            }
+
+            if (v.Length > PhysicsConstants.MaxWallPolygonVertices)
+            {
+                throw new ArgumentException(
+                    $"{cell}: physics polygon {id} has {v.Length} vertices; a wall may have at most {PhysicsConstants.MaxWallPolygonVertices}.",
+                    "cellStruct");
+            }
+
+            float zMin = float.MaxValue, zMax = float.MinValue;
+            Vector2 min = new(float.MaxValue), max = new(float.MinValue);
+            foreach (Vector3 p in v)
+            {
+                zMin = MathF.Min(zMin, p.Z);
+                zMax = MathF.Max(zMax, p.Z);
+                min = Vector2.Min(min, new Vector2(p.X, p.Y));
+                max = Vector2.Max(max, new Vector2(p.X, p.Y));
+            }
+
+            walls.Add(new WallPolygon(vertices.Count, v.Length, zMin, zMax, min, max));
+            vertices.AddRange(v);
+        }
+
+        return walls.Count == 0 ? None : new CellWalls([.. walls], [.. vertices]);
+    }
+
+    private static bool CoversPortal(Vector3[] polygon, PortalShape[] portals)
+    {
+        Vector3 centre = Vector3.Zero;
+        foreach (Vector3 p in polygon)
+        {
+            centre += p;
+        }
+
+        centre /= polygon.Length;
+        foreach (PortalShape portal in portals)
+        {
+            if (portal.Covers(polygon, centre))
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+}

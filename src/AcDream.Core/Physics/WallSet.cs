@@ -1,0 +1,122 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The cells whose walls one body move meets, gathered once per call: near the move in the mover's
+/// cell and the cells its portals lead to (indoors), or over the outdoor squares it covers, in its
+/// own landblock and the neighbours across a seam (outdoors). Held on the stack; the cells are
+/// referred to by landblock slot and index, with each slot's offset into the move's frame.
+/// </summary>
+internal ref struct WallSet
+{
+    private readonly Span<int> _cells; // slot << 16 | cell index
+    private LandblockEntry? _slot0, _slot1, _slot2, _slot3;
+    private Vector2 _offset0, _offset1, _offset2, _offset3;
+    private int _slots;
+    private int _count;
+
+    /// <summary>An empty set over <paramref name="storage"/>, for the move box centred on <paramref name="centre"/> with half-size <paramref name="reach"/>.</summary>
+    public WallSet(Span<int> storage, Vector2 centre, float reach)
+    {
+        _cells = storage;
+        BoxMin = centre - new Vector2(reach);
+        BoxMax = centre + new Vector2(reach);
+    }
+
+    /// <summary>Every point the body can reach this call lies in this box (move's frame): the start ± (move length + radius).</summary>
+    public Vector2 BoxMin { get; }
+
+    public Vector2 BoxMax { get; }
+
+    public readonly int Count => _count;
+
+    /// <summary>Adds landblock <paramref name="entry"/>, whose frame is <paramref name="offset"/> from the move's; returns its slot.</summary>
+    public int AddLandblock(LandblockEntry entry, Vector2 offset)
+    {
+        switch (_slots)
+        {
+            case 0: (_slot0, _offset0) = (entry, offset); break;
+            case 1: (_slot1, _offset1) = (entry, offset); break;
+            case 2: (_slot2, _offset2) = (entry, offset); break;
+            default: (_slot3, _offset3) = (entry, offset); break;
+        }
+
+        return _slots++;
+    }
+
+    /// <summary>Adds cell <paramref name="cellIndex"/> of slot <paramref name="slot"/> unless present, or the set is full, or its walls lie outside the box; false when full.</summary>
+    public bool TryAdd(int slot, int cellIndex)
+    {
+        int key = (slot << 16) | cellIndex;
+        for (int i = 0; i < _count; i++)
+        {
+            if (_cells[i] == key)
+            {
+                return true;
+            }
+        }
+
+        if (_count == _cells.Length)
+        {
+            return false;
+        }
+
+        _cells[_count++] = key;
+        return true;
+    }
+
+    /// <summary>Whether the set holds cell <paramref name="cellIndex"/> of slot <paramref name="slot"/>.</summary>
+    public readonly bool Contains(int slot, int cellIndex)
+    {
+        int key = (slot << 16) | cellIndex;
+        for (int i = 0; i < _count; i++)
+        {
+            if (_cells[i] == key)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>The cell at <paramref name="i"/> (insertion order) with its landblock slot.</summary>
+    public readonly (int Slot, int Cell) At(int i) => (_cells[i] >> 16, _cells[i] & 0xFFFF);
+
+    /// <summary>Whether the box, moved into a landblock's frame by −<paramref name="offset"/>, overlaps the bounds given.</summary>
+    public readonly bool Overlaps(Vector2 min, Vector2 max, Vector2 offset) =>
+        min.X <= BoxMax.X - offset.X && max.X >= BoxMin.X - offset.X && min.Y <= BoxMax.Y - offset.Y && max.Y >= BoxMin.Y - offset.Y;
+
+    /// <summary>The landblock in slot <paramref name="slot"/> and its offset.</summary>
+    public readonly (LandblockEntry Entry, Vector2 Offset) Slot(int slot) => slot switch
+    {
+        0 => (_slot0!, _offset0),
+        1 => (_slot1!, _offset1),
+        2 => (_slot2!, _offset2),
+        _ => (_slot3!, _offset3),
+    };
+
+    /// <summary>
+    /// Sweeps the body (contact radius <paramref name="radius"/>) from <paramref name="p"/> along
+    /// <paramref name="d"/> against every gathered wall in the band: the earliest contact below
+    /// <paramref name="t"/>, with its normal.
+    /// </summary>
+    public readonly void Sweep(Vector2 p, Vector2 d, float radius, float zLow, float zHigh, ref float t, ref Vector2 normal)
+    {
+        for (int i = 0; i < _count; i++)
+        {
+            (int slot, int index) = At(i);
+            (LandblockEntry entry, Vector2 offset) = Slot(slot);
+            CellWalls walls = entry.Cells[index].Walls;
+            ReadOnlySpan<Vector3> vertices = walls.Vertices;
+            foreach (ref readonly WallPolygon wall in walls.Polygons.AsSpan())
+            {
+                if (wall.ZMax > zLow && wall.ZMin < zHigh && Overlaps(wall.Min, wall.Max, offset))
+                {
+                    BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, zLow, zHigh, ref t, ref normal);
+                }
+            }
+        }
+    }
+}
