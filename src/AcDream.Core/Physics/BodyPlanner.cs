@@ -12,11 +12,12 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
     /// <summary>
     /// The path of a body of <paramref name="body"/> with its feet at <paramref name="position"/>
     /// (world) in <paramref name="cellId"/> moving by <paramref name="delta"/>; the path's points (in <paramref name="points"/>) are
-    /// landblock-local in landblock (<paramref name="lbX"/>, <paramref name="lbY"/>). False when the
+    /// landblock-local, in the mover's landblock (its cell's indoors). False when the
     /// mover's landblock is not loaded (no walls are known: the point move decides).
     /// </summary>
-    public bool Plan(Vector3 position, uint cellId, Vector2 delta, float stepUp, MoverBody body, Span<Vector2> points, ref BodySweep.Path path, out int lbX, out int lbY)
+    public bool Plan(Vector3 position, uint cellId, Vector2 delta, float stepUp, MoverBody body, Span<Vector2> points, ref BodySweep.Path path)
     {
+        int lbX, lbY;
         Vector2 local;
         if (CellIds.IsIndoor(cellId))
         {
@@ -55,14 +56,15 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
 
     /// <summary>
     /// The gap the body keeps from walls beyond its radius: <see cref="PhysicsConstants.BodySkin"/>
-    /// plus twice the float spacing of the coordinates it may reach, in the world frame and the
-    /// landblock's, so rounding the answer to the world frame never puts the body into a wall.
+    /// plus the float spacing of the coordinates it may reach, in the world frame and the landblock's.
+    /// Rounding the answer to the world frame moves it by at most half that spacing on each axis
+    /// (0.71 of it in all), so it never puts the body into a wall.
     /// </summary>
     private float Skin(int lbX, int lbY, Vector2 local, float reach)
     {
         Vector2 world = frame.Origin(lbX, lbY) + local;
         float largest = MathF.Max(MathF.Max(MathF.Abs(world.X), MathF.Abs(world.Y)), MathF.Max(MathF.Abs(local.X), MathF.Abs(local.Y))) + reach;
-        return PhysicsConstants.BodySkin + (2f * (MathF.BitIncrement(largest) - largest));
+        return PhysicsConstants.BodySkin + (MathF.BitIncrement(largest) - largest);
     }
 
     /// <summary>The mover's cell and every cell reached from it through a portal whose bounds the move's box overlaps, breadth first.</summary>

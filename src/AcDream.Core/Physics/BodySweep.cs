@@ -15,6 +15,14 @@ namespace AcDream.Core.Physics;
 /// </summary>
 internal static class BodySweep
 {
+    /// <summary>
+    /// A move into a touched wall by less than this fraction of its length counts as along it. A
+    /// projection onto a wall leaves a residue of float rounding (about 1e-7 of the move) that would
+    /// otherwise read as a new contact with the same wall; the drift it allows is 1e-6 of the distance
+    /// walked at that grazing angle (0.3 mm over 300 m).
+    /// </summary>
+    private const float Glancing = 1e-6f;
+
     /// <summary>What a body's path holds besides its corner points: how many corners, and what it touched.</summary>
     public struct Path
     {
@@ -75,7 +83,7 @@ internal static class BodySweep
             path.Normal = normal;
             rest *= 1f - t;
             rest -= Vector2.Dot(rest, normal) * normal; // along the wall: never longer than before
-            if (contact > 0 && Vector2.Dot(rest, previous) < 0f)
+            if (contact > 0 && Vector2.Dot(rest, previous) < -Glancing * rest.Length())
             {
                 break; // into the wall touched before: a concave corner stops the body
             }
@@ -102,7 +110,7 @@ internal static class BodySweep
         if (distanceSquared < touch * touch)
         {
             Vector2 n = distanceSquared > 0f ? away / MathF.Sqrt(distanceSquared) : OffsetNormal(ab, -d);
-            if (Vector2.Dot(d, n) < 0f && t > 0f)
+            if (Vector2.Dot(d, n) < -Glancing * d.Length() && t > 0f)
             {
                 (t, normal) = (0f, n);
             }

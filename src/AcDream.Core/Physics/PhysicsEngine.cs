@@ -306,7 +306,7 @@ public sealed class PhysicsEngine
     {
         Span<Vector2> points = stackalloc Vector2[PhysicsConstants.MaxBodyContacts + 2];
         var path = default(BodySweep.Path);
-        if (move == Vector2.Zero || !_body.Plan(pos, cellId, move, stepUp, options.Body!.Value, points, ref path, out _, out _) || path.Contacts == 0)
+        if (move == Vector2.Zero || !_body.Plan(pos, cellId, move, stepUp, options.Body!.Value, points, ref path) || path.Contacts == 0)
         {
             ResolveResult free = PointMove(pos, cellId, move, stepUp, in options);
             return contourLeft && free.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope
