@@ -257,7 +257,10 @@ public sealed class PhysicsEngine
     /// <returns>
     /// As the four-argument call; with <see cref="MovementOptions.SweepStepLength"/> a move stopped part
     /// way returns the last sub-step that was accepted, and with <see cref="MovementOptions.StepDownHeight"/>
-    /// an airborne mover is reported with <c>IsOnGround</c> false over the cell below it.
+    /// an airborne mover is reported with <c>IsOnGround</c> false over the cell below it. With
+    /// <see cref="MovementOptions.Body"/> the body slides along the walls it meets (<see cref="ResolveOutcome.Slid"/>
+    /// with the wall's normal) and never ends overlapping one; stopped at once, it is refused with
+    /// <see cref="ResolveOutcome.Wall"/> and the wall's normal.
     /// </returns>
     /// <exception cref="ArgumentException">As the four-argument call.</exception>
     public ResolveResult Resolve(

@@ -49,10 +49,12 @@ public readonly record struct ResolveResult(
     }
 
     /// <summary>
-    /// Where a surface stopped the move, its unit normal (world axes, pointing towards the mover's
-    /// side): the terrain's under a step or slope too steep, a doorway wall's when the move crossed
-    /// a doorway's plane beside its opening. Zero otherwise (moved, held, unloaded land, the edge of
-    /// the world, a floor edge, a building's outer wall).
+    /// Where a surface stopped or turned the move, its unit normal (world axes, pointing towards the
+    /// mover's side): the terrain's under a step or slope too steep (and for a body slid along a
+    /// slope's contour), a doorway wall's when the move crossed a doorway's plane beside its opening,
+    /// and with a body the last wall it touched (horizontal) when it slid or was stopped. Zero
+    /// otherwise (moved, held, unloaded land, the edge of the world, a floor edge, a building's
+    /// outer wall found by the doors-only rule).
     /// </summary>
     public Vector3 SurfaceNormal { get; init; }
 
