@@ -64,7 +64,7 @@ internal static class WalkSvg
         Vector2 start = Map(samples[0].Position.X, samples[0].Position.Y), end = Map(record.Final.Position.X, record.Final.Position.Y);
         map.Add(Label(start.X + 5, start.Y - 5, "start", 12));
         map.Add(Label(end.X + 5, end.Y + 14, "end", 12));
-        map.Add(Label(Margin, mapTop - 8, Invariant($"{record.Scene.Name}: top-down, north up, {ScaleText(scale)}; contours every {ContourInterval} m; red rings: refused moves{(body is null ? "" : "; blue circles: the body where it touched a wall")}"), 13));
+        map.Add(Label(Margin, mapTop - 8, Invariant($"{record.Scene.Name}: top-down, north up, {ScaleText(scale)}; contours every {ContourInterval} m; red rings: refused moves{(body is null ? "" : "; blue circles: the body at walls")}"), 13));
 
         // Profile: Z over frames.
         float profileTop = mapTop + mapHeight + 60f;
