@@ -23,7 +23,8 @@ internal static class MainJob
         Usage: dotnet run --project src/AcDream.App -- [options]
 
         Runs a scripted walk through the physics engine, headless, and prints what happened:
-        the cells visited, refused moves, airborne frames, landblocks streamed, the end point.
+        the cells visited, moves slid along walls and refused, airborne frames, landblocks
+        streamed, the end point.
         Writes an SVG (top-down map and Z profile) to the output folder.
 
         Options:

@@ -1,3 +1,4 @@
+using System.Numerics;
 using System.Xml.Linq;
 using AcDream.App.Scenes;
 using AcDream.Core.Physics;
@@ -22,15 +23,16 @@ public sealed class MainJobTests : IDisposable
         var indoor = visits.Select(v => CellIds.IsIndoor(v.CellId) ? v.CellId : 0u)
             .Aggregate(new List<uint>(), (list, c) => { if (list.Count == 0 || list[^1] != c) { list.Add(c); } return list; });
         indoor.Should().Equal(
-            [0u, 0xA9B40145u, 0xA9B40143u, 0xA9B40145u, 0u, 0xA9B40170u, 0xA9B40171u, 0xA9B40173u, 0xA9B40172u, 0xA9B40173u, 0xA9B40171u, 0xA9B40174u],
+            [0u, 0xA9B40145u, 0xA9B40143u, 0xA9B40145u, 0u, 0xA9B40145u, 0xA9B40143u, 0xA9B40145u, 0u, 0xA9B40170u, 0xA9B40171u, 0xA9B40173u, 0xA9B40172u, 0xA9B40173u, 0xA9B40171u, 0xA9B40174u],
             $"cells visited (0 = outdoors): {string.Join(" ", visits.Select(v => $"{v.Frame}:{v.CellId:X8}"))}");
         visits.Should().Contain(v => CellIds.LandblockOf(v.CellId) == 0xA8B4FFFFu, "the walk starts west of the seam");
         record.Final.CellId.Should().Be(0xA9B40174u);
         record.Final.IsOnGround.Should().BeTrue();
         record.Final.Position.Z.Should().BeApproximately(90f, 1e-3f, "the cellar floor");
-        record.RefusalCount(ResolveOutcome.SlopeTooSteep).Should().BeGreaterThan(0, "the needle refuses moves");
-        record.RefusalCount(ResolveOutcome.Wall).Should().BeGreaterThan(0, "the main room's east wall and the doorway wall under 0x0142 refuse moves");
+        record.Samples.Count(s => s.Slide is { Z: > 0f }).Should().BeGreaterThan(0, "the body slides along the needle's contour");
+        record.Samples.Count(s => s.Slide is { Z: 0f }).Should().BeGreaterThan(0, "the body slides along the main room's east wall and the wall under 0x0142's opening");
         record.Scene.Effects.Should().Be(MovementOptions.Player, "the default scene uses the effects a player uses");
+        record.Scene.Effects.Body.Should().Be(MoverBody.Player, "and so the player's body");
         record.Drops.Should().BeEmpty("with step down on, the shaft is a fall, not a one-frame drop");
         Fall fall = record.Falls().Should().ContainSingle().Subject;
         fall.FromZ.Should().BeApproximately(94f, 1e-3f);
@@ -40,35 +42,107 @@ public sealed class MainJobTests : IDisposable
         record.AirborneFrames.Should().Be(fall.AirborneFrames);
         record.Streaming.Count(e => e.Loaded).Should().Be(12, "9 at the start and 3 after the seam");
         record.Streaming.Count(e => !e.Loaded).Should().Be(3);
-        record.Legs.Should().HaveCount(19);
+        record.Legs.Should().HaveCount(22);
     }
 
     [Fact]
-    public void SceneRunner_DefaultScene_RefusalsAreTheEnginesOutcomesPerLegAndInTheSummary()
+    public void SceneRunner_DefaultScene_SlidesAndRefusalsAreTheEnginesOutcomesPerLegAndInTheSummary()
     {
         WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
-        string Refusals(int leg) => string.Join(", ", record.Legs[leg - 1].Refusals.Select(r => $"{r.Key}={r.Value}"));
+        string Slides(int leg) => string.Join(" ", record.Legs[leg - 1].Slides);
 
-        // Leg 2 runs at the rock needle: with the player's walkable slope the engine refuses it as too steep.
+        // Leg 2 runs at the rock needle: with walkable slope and a body the engine slides it along the
+        // slope's contour (the slope's normal, which has a Z) instead of refusing it.
         LegResult needle = record.Legs[1];
         needle.Leg.Name.Should().Contain("rock needle");
         needle.Reached.Should().BeFalse();
-        needle.Refusals.Keys.Should().Equal([ResolveOutcome.SlopeTooSteep], $"leg 2 refusals: {Refusals(2)}");
-        needle.Refusals[ResolveOutcome.SlopeTooSteep].Should().BeGreaterThan(50, $"the leg runs 4 s into the slope; {Refusals(2)}");
-        record.Samples.Where(s => s.Frame >= needle.FirstFrame && s.Frame <= needle.LastFrame && s.Refusal is not null)
-            .Should().OnlyContain(s => s.Refusal == ResolveOutcome.SlopeTooSteep);
-        record.Legs[7].Refusals.Keys.Should().Equal([ResolveOutcome.Wall], $"leg 8, the main room's east wall: {Refusals(8)}");
-        record.Legs[8].Refusals.Keys.Should().Equal([ResolveOutcome.Wall], $"leg 9, the doorway to 0x0142 opens 1 m up: its wall; {Refusals(9)}");
-        record.RefusalCount(ResolveOutcome.StepTooHigh).Should().Be(0);
-        record.RefusalCount(ResolveOutcome.SlopeTooSteep).Should().Be(needle.Refusals[ResolveOutcome.SlopeTooSteep], "only the needle is too steep");
+        needle.Refusals.Should().BeEmpty();
+        needle.Slides.Should().HaveCountGreaterThan(50, $"the leg runs 4 s into the slope; {Slides(2)}")
+            .And.OnlyContain(n => n.Z > 0.05f && n.Z < PhysicsConstants.FloorZ, "a slope too steep to climb");
+
+        // Legs 8 and 9 slide along the main room's east wall and the wall under the opening to 0x0142.
+        LegResult east = record.Legs[7], north = record.Legs[8];
+        east.Leg.Name.Should().Contain("east wall");
+        east.Slides.Should().HaveCountGreaterThan(20, Slides(8)).And.OnlyContain(n => MathF.Abs(n.X + 1f) < 1e-4f && MathF.Abs(n.Y) < 1e-4f && n.Z == 0f, "the east wall's normal points west");
+        north.Leg.Name.Should().Contain("0x0142");
+        north.Slides.Should().HaveCountGreaterThan(20, Slides(9)).And.OnlyContain(n => MathF.Abs(n.X) < 1e-4f && MathF.Abs(n.Y + 1f) < 1e-4f && n.Z == 0f, "the wall under the opening faces south");
+        record.Legs.Should().OnlyContain(l => l.Refusals.Count == 0, "the body slides where the point was refused; nothing in the walk refuses it");
 
         string summary = WalkReport.Format(record, "walk.svg");
         string[] lines = summary.Split(System.Environment.NewLine);
         lines.Should().ContainSingle(l => l.StartsWith("   2. run at the rock needle", StringComparison.Ordinal))
-            .Which.Should().EndWith($"; refused {needle.Refusals[ResolveOutcome.SlopeTooSteep]} × slope too steep", summary);
-        lines.Should().ContainSingle(l => l.StartsWith("   8. ", StringComparison.Ordinal)).Which.Should().EndWith($"; refused {record.Legs[7].Refusals[ResolveOutcome.Wall]} × wall");
+            .Which.Should().EndWith($"; slid {needle.Slides.Count} × along a slope's contour, normal ({needle.Slides[0].X:F2}, {needle.Slides[0].Y:F2}, {needle.Slides[0].Z:F2})", summary);
+        lines.Should().ContainSingle(l => l.StartsWith("   8. ", StringComparison.Ordinal)).Which.Should().EndWith($"; slid {east.Slides.Count} × along a wall, normal (-1.00, 0.00)", summary);
+        lines.Should().ContainSingle(l => l.StartsWith("   9. ", StringComparison.Ordinal)).Which.Should().EndWith($"; slid {north.Slides.Count} × along a wall, normal (0.00, -1.00)", summary);
+        int wallSlides = record.Samples.Count(s => s.Slide is { Z: 0f });
+        lines.Should().ContainSingle(l => l.StartsWith("Slid moves: ", StringComparison.Ordinal)).Which.Should().Be(
+            $"Slid moves: {wallSlides} along walls, {record.SlideCount - wallSlides} along slopes' contours.", summary);
+        wallSlides.Should().BeGreaterThan(east.Slides.Count + north.Slides.Count - 1);
         lines.Should().ContainSingle(l => l.StartsWith("Refused moves: ", StringComparison.Ordinal)).Which.Should().Be(
-            $"Refused moves: 0 step too high (> 0.5 m), {record.RefusalCount(ResolveOutcome.SlopeTooSteep)} slope too steep, {record.RefusalCount(ResolveOutcome.Wall)} wall, 0 outer wall, 0 unloaded land ahead, 0 edge of the world.");
+            "Refused moves: 0 step too high (> 0.5 m), 0 slope too steep, 0 wall, 0 outer wall, 0 unloaded land ahead, 0 edge of the world.");
+        lines.Should().Contain(l => l.StartsWith("Effects: ", StringComparison.Ordinal) && l.Contains("a body (an upright cylinder of radius 0.48 m, 1.835 m tall)"), summary);
+    }
+
+    [Fact]
+    public void SceneRunner_DefaultScene_EastWallLegSlidesNorthAlongTheWallItsRadiusAway()
+    {
+        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
+        LegResult leg = record.Legs[7];
+        const float wallX = 142.1f; // the main room 0x0143's east wall, landblock-local = world here
+        FrameSample[] frames = record.Samples.Where(s => s.Frame >= leg.FirstFrame - 1 && s.Frame <= leg.LastFrame).ToArray();
+
+        // The leg walks from (139, 10) towards (152, 16), 24.8° from the wall's normal: diagonally at it.
+        Vector2 start = new(frames[0].Position.X, frames[0].Position.Y);
+        Vector2 aim = Vector2.Normalize(leg.Leg.To!.Value - start);
+        MathF.Acos(aim.X).Should().BeInRange(0.35f, 0.5f, $"the leg aims {aim} at the wall, 20–29° from its normal (−1, 0)");
+
+        foreach (FrameSample s in frames)
+        {
+            (wallX - s.Position.X).Should().BeGreaterThanOrEqualTo(MoverBody.Player.Radius - 1e-3f, $"frame {s.Frame}: the body stays its radius off the wall, at {s.Position}");
+            s.CellId.Should().Be(0xA9B40143u, $"frame {s.Frame}");
+            s.Position.Z.Should().Be(94f, $"frame {s.Frame}");
+        }
+
+        FrameSample[] sliding = frames.Where(s => s.Slide is not null).ToArray();
+        sliding.Should().HaveCountGreaterThan(20);
+        sliding.Should().OnlyContain(s => MathF.Abs(s.Position.X - (wallX - MoverBody.Player.Radius)) < 1e-3f, "in contact while it slides");
+        for (int i = 1; i < sliding.Length; i++)
+        {
+            sliding[i].Position.Y.Should().BeGreaterThan(sliding[i - 1].Position.Y, $"frame {sliding[i].Frame}: it moves north along the wall");
+        }
+
+        (sliding[^1].Position.Y - sliding[0].Position.Y).Should().BeGreaterThan(0.5f, $"slid from {sliding[0].Position} to {sliding[^1].Position}");
+        leg.Reached.Should().BeFalse("its point is beyond the wall");
+    }
+
+    [Fact]
+    public void SceneRunner_DefaultScene_DoorwayLegsPassTheWestDoorAtFortyFiveDegrees()
+    {
+        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
+        var jamb = new Vector2(136.7f, 6.1f); // the west door 0x0145's north jamb on the main room's side
+
+        foreach ((int index, uint[] cells) in new[] { (12, new[] { 0xA9B40029u, 0xA9B40145u, 0xA9B40143u }), (13, new[] { 0xA9B40143u, 0xA9B40145u, 0xA9B40029u }) })
+        {
+            LegResult leg = record.Legs[index];
+            FrameSample[] frames = record.Samples.Where(s => s.Frame >= leg.FirstFrame - 1 && s.Frame <= leg.LastFrame).ToArray();
+            var visited = new List<uint>();
+            foreach (FrameSample s in frames)
+            {
+                if (visited.Count == 0 || visited[^1] != s.CellId)
+                {
+                    visited.Add(s.CellId);
+                }
+
+                Vector2.Distance(new Vector2(s.Position.X, s.Position.Y), jamb).Should().BeGreaterThanOrEqualTo(MoverBody.Player.Radius - 1e-3f, $"leg {index + 1} frame {s.Frame}: the body stays off the jamb, at {s.Position}");
+            }
+
+            Vector2 start = new(frames[0].Position.X, frames[0].Position.Y);
+            Vector2 aim = Vector2.Normalize(leg.Leg.To!.Value - start);
+            (MathF.Acos(MathF.Abs(aim.X)) * 180f / MathF.PI).Should().BeApproximately(45f, 0.5f, $"leg {index + 1} aims {aim}, 45° from the doorways' normal (±1, 0)");
+            leg.Reached.Should().BeTrue($"leg {index + 1} passes both doorways");
+            visited.Should().Equal(cells, $"leg {index + 1} ({leg.Leg.Name}) cells: {string.Join(" ", visited.Select(c => c.ToString("X8")))}");
+            leg.Slides.Should().NotBeEmpty($"leg {index + 1} rounds the jamb").And.OnlyContain(n => n.Z == 0f && n.X > 0f && n.Y < 0f, "the jamb's corner pushes the body east and south");
+        }
     }
 
     [Fact]
@@ -83,14 +157,19 @@ public sealed class MainJobTests : IDisposable
     }
 
     [Theory]
-    [InlineData("\"player\"", 1.5f, true, 0.48f, true)]
-    [InlineData("\"literal\"", null, false, null, false)]
-    [InlineData("{ \"stepDownHeight\": 2, \"doorsOnly\": true }", 2f, false, null, true)]
-    [InlineData("{ \"walkableSlope\": true, \"sweepStepLength\": 0.3 }", null, true, 0.3f, false)]
-    public void SceneReader_Effects_ReadAsMovementOptions(string effects, float? stepDown, bool slope, float? sweep, bool doors)
+    [InlineData("\"player\"", 1.5f, true, 0.48f, true, 0.48f, 1.835f)]
+    [InlineData("\"literal\"", null, false, null, false, null, null)]
+    [InlineData("{ \"stepDownHeight\": 2, \"doorsOnly\": true }", 2f, false, null, true, null, null)]
+    [InlineData("{ \"walkableSlope\": true, \"sweepStepLength\": 0.3 }", null, true, 0.3f, false, null, null)]
+    [InlineData("{ \"doorsOnly\": true, \"body\": \"player\" }", null, false, null, true, 0.48f, 1.835f)]
+    [InlineData("{ \"body\": { \"radius\": 0.3, \"height\": 1.2 } }", null, false, null, false, 0.3f, 1.2f)]
+    [InlineData("{ \"body\": { \"height\": 100, \"radius\": 10 } }", null, false, null, false, 10f, 100f)]
+    [InlineData("{ \"walkableSlope\": true, \"body\": null }", null, true, null, false, null, null)]
+    public void SceneReader_Effects_ReadAsMovementOptions(string effects, float? stepDown, bool slope, float? sweep, bool doors, float? radius, float? height)
     {
         Scene scene = SceneReader.Parse($$"""{ "name": "t", "start": { "position": [10, 10] }, "effects": {{effects}}, "legs": [ { "name": "a", "to": [11, 10] } ] }""", "test.json");
-        scene.Effects.Should().Be(new MovementOptions { StepDownHeight = stepDown, WalkableSlope = slope, SweepStepLength = sweep, DoorsOnly = doors });
+        MoverBody? body = radius is float r && height is float h ? new MoverBody(r, h) : null;
+        scene.Effects.Should().Be(new MovementOptions { StepDownHeight = stepDown, WalkableSlope = slope, SweepStepLength = sweep, DoorsOnly = doors, Body = body }, $"effects {effects}");
     }
 
     [Theory]
@@ -98,6 +177,8 @@ public sealed class MainJobTests : IDisposable
     [InlineData("{ \"stepDownHeight\": -1 }", "effects.stepDownHeight")]
     [InlineData("{ \"sweepStepLength\": 0 }", "effects.sweepStepLength")]
     [InlineData("{ \"gravity\": 3 }", "effects")]
+    [InlineData("{ \"body\": \"giant\" }", "effects.body")]
+    [InlineData("{ \"body\": { \"radius\": 0.5 } }", "effects.body.height")]
     public void SceneReader_BadEffects_NameTheField(string effects, string field)
     {
         FluentActions.Invoking(() => SceneReader.Parse($$"""{ "name": "t", "start": { "position": [10, 10] }, "effects": {{effects}}, "legs": [ { "name": "a", "to": [11, 10] } ] }""", "bad.json"))
@@ -120,7 +201,7 @@ public sealed class MainJobTests : IDisposable
         document.Root!.Name.Should().Be(ns + "svg");
         document.Descendants(ns + "polyline").Count().Should().BeGreaterThan(20, "the route, one line per cell run, on the map and on the profile");
         document.Descendants(ns + "path").Should().NotBeEmpty("terrain contours");
-        document.Descendants(ns + "g").Select(g => (string?)g.Attribute("id")).Should().Contain(["map", "profile", "floor-plans", "contours"]);
+        document.Descendants(ns + "g").Select(g => (string?)g.Attribute("id")).Should().Contain(["map", "profile", "floor-plans", "contours", "body-clearance"]);
     }
 
     [Fact]
@@ -156,6 +237,33 @@ public sealed class MainJobTests : IDisposable
 
         status.Should().Be(2);
         error.ToString().Should().Contain(file).And.Contain($"field {field}:").And.Contain(value);
+        File.Exists(Path.Combine(_folder, "x.svg")).Should().BeFalse("nothing runs on a bad scene");
+    }
+
+    [Theory]
+    [InlineData("""{ "radius": -0.48, "height": 1.835 }""", "effects.body.radius", "between 0 (exclusive) and 10", "-0.48")]
+    [InlineData("""{ "radius": 0, "height": 1.835 }""", "effects.body.radius", "between 0 (exclusive) and 10", "0")]
+    [InlineData("""{ "radius": 0.48, "height": 0 }""", "effects.body.height", "between 0 (exclusive) and 100", "0")]
+    [InlineData("""{ "radius": 0.48, "height": -2 }""", "effects.body.height", "between 0 (exclusive) and 100", "-2")]
+    [InlineData("""{ "radius": "NaN", "height": 1.835 }""", "effects.body.radius", "must be a number", "\"NaN\"")]
+    [InlineData("""{ "radius": 0.48, "height": 1e39 }""", "effects.body.height", "must be a number", "1e39")]
+    [InlineData("""{ "radius": 11, "height": 1.835 }""", "effects.body.radius", "between 0 (exclusive) and 10", "11")]
+    [InlineData("""{ "radius": 0.48 }""", "effects.body.height", "is missing", "nothing")]
+    [InlineData("""{ "radius": 0.48, "height": 1.8, "shape": "capsule" }""", "effects.body.shape", "unknown field", "\"capsule\"")]
+    [InlineData(""" "tall" """, "effects.body", "must be \"player\", null (a point) or", "\"tall\"")]
+    [InlineData("3", "effects.body", "must be \"player\", null (a point) or", "3")]
+    public void Run_BadBodyInSceneFile_ExitsTwoWithOneLineNamingFieldAndValue(string body, string field, string problem, string value)
+    {
+        string file = Path.Combine(_folder, "body.json");
+        File.WriteAllText(file, $$"""{ "name": "x", "start": { "position": [10, 10] }, "effects": { "doorsOnly": true, "body": {{body}} }, "legs": [ { "name": "a", "to": [11, 10] } ] }""");
+        var error = new StringWriter();
+
+        int status = MainJob.Run(["--scene", file, "--out", _folder], new StringWriter(), error);
+
+        status.Should().Be(2, error.ToString());
+        string[] lines = error.ToString().Split(System.Environment.NewLine, StringSplitOptions.RemoveEmptyEntries);
+        lines.Should().ContainSingle($"one line: {error}");
+        lines[0].Should().StartWith($"error: scene {file}: field {field}: ").And.Contain(problem).And.EndWith($"; got {value}");
         File.Exists(Path.Combine(_folder, "x.svg")).Should().BeFalse("nothing runs on a bad scene");
     }
 

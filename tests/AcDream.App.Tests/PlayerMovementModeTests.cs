@@ -121,7 +121,9 @@ public class PlayerMovementModeTests
         PhysicsEngine engine = HoltburgEngine();
         // The cottage's main room 0x0143 (94 m) meets the raised passage 0x0142 (95 m) at y = 13.1:
         // the doorway's opening starts 1 m up, so walking north the mover meets the wall under it.
+        // The literal point stops on the doorway's plane; the player's body its radius short of it.
         MovementOptions effects = player ? MovementOptions.Player : default;
+        float stopY = player ? 13.1f - MoverBody.Player.Radius : 13.1f;
         var mode = new PlayerMovementMode(engine, new Vector3(139f, 12.5f, 94f), 0xA9B40143u, 0f, effects);
         var walk = new MovementIntent(1f, 0f, 0f, false);
 
@@ -135,7 +137,8 @@ public class PlayerMovementModeTests
 
         mode.CellId.Should().Be(0xA9B40143u);
         mode.Position.Z.Should().Be(94f);
-        mode.Position.Y.Should().BeApproximately(13.1f, 1e-3f, "stopped at the doorway's plane");
+        mode.Position.Y.Should().BeApproximately(stopY, 1e-3f, player ? "the body stopped its radius short of the wall" : "stopped at the doorway's plane");
+        mode.Position.Y.Should().BeLessThanOrEqualTo(stopY, "never closer to the wall than that");
         refused.Should().BeGreaterThan(20);
         last.LastRefusal.Should().Be(ResolveOutcome.Wall, $"the engine's reason; frame {last}");
         last.LastRefusalNormal.X.Should().BeApproximately(0f, 1e-5f, $"the doorway wall faces south, towards the mover: {last.LastRefusalNormal}");
@@ -150,10 +153,11 @@ public class PlayerMovementModeTests
     }
 
     [Fact]
-    public void Update_IntoTheMainRoomsEastWall_ReportsAWallWithNoSurfaceNormal()
+    public void Update_PointIntoTheMainRoomsEastWall_ReportsAWallWithNoSurfaceNormal()
     {
-        // No floor and no doorway east of x = 142.1 in 0x0143: a floor edge, whose refusal names no surface.
-        var mode = new PlayerMovementMode(HoltburgEngine(), new Vector3(139f, 10f, 94f), 0xA9B40143u, MathF.PI / 2f, MovementOptions.Player);
+        // A point mover (the player's effects without the body): no floor and no doorway east of
+        // x = 142.1 in 0x0143 is a floor edge, whose refusal names no surface.
+        var mode = new PlayerMovementMode(HoltburgEngine(), new Vector3(139f, 10f, 94f), 0xA9B40143u, MathF.PI / 2f, MovementOptions.Player with { Body = null });
 
         MovementFrame last = default;
         int refused = 0;
@@ -167,6 +171,64 @@ public class PlayerMovementModeTests
         refused.Should().BeGreaterThan(30, "walking 6 m (90 frames) towards a wall 3.1 m (47 frames) away");
         last.LastRefusal.Should().Be(ResolveOutcome.Wall);
         last.LastRefusalNormal.Should().Be(Vector3.Zero, "the engine names no surface at a floor edge");
+    }
+
+    [Fact]
+    public void Update_BodyAtThirtyDegreesIntoTheMainRoomsEastWall_SlidesNorthAlongItItsRadiusAway()
+    {
+        // Heading 60° (east-north-east): 30° from the east wall's normal. The body meets the wall
+        // (x = 142.1) after about 1.5 s, then slides north along it; the northward part of the walk,
+        // 1 m/s, is the same before and after the contact, so after 2 s the mover is 2 m north.
+        const float wallX = 142.1f;
+        var mode = new PlayerMovementMode(HoltburgEngine(), new Vector3(139f, 10f, 94f), 0xA9B40143u, MathF.PI / 3f, MovementOptions.Player);
+        var walk = new MovementIntent(1f, 0f, 0f, false);
+
+        int slid = 0;
+        MovementFrame last = default;
+        for (int i = 0; i < 60; i++)
+        {
+            last = mode.Update(walk, Frame);
+            last.RefusedSteps.Should().Be(0, $"frame {i}: sliding is not a refusal; {last}");
+            slid += last.SlidSteps;
+            (wallX - mode.Position.X).Should().BeGreaterThanOrEqualTo(MoverBody.Player.Radius - 1e-3f, $"frame {i}: the body stays its radius off the wall, at {mode.Position}");
+        }
+
+        slid.Should().BeInRange(13, 16, "the last 0.49 s of 2 s are along the wall");
+        mode.Position.X.Should().BeApproximately(wallX - MoverBody.Player.Radius, 1e-3f, "in contact with the wall");
+        mode.Position.Y.Should().BeApproximately(12f, 1e-3f, "2 s at 1 m/s north, free and sliding alike");
+        mode.CellId.Should().Be(0xA9B40143u);
+        mode.Position.Z.Should().Be(94f);
+        last.SlidSteps.Should().Be(1, $"{last}");
+        last.LastSlideNormal.X.Should().BeApproximately(-1f, 1e-5f, $"the east wall's normal points west, at the mover: {last.LastSlideNormal}");
+        last.LastSlideNormal.Y.Should().BeApproximately(0f, 1e-5f, $"{last.LastSlideNormal}");
+        last.LastSlideNormal.Z.Should().Be(0f, "a wall's normal is horizontal");
+    }
+
+    [Fact]
+    public void Update_BodyIntoTheMainRoomsNorthEastCorner_StopsThereAsAWallFrameAfterFrame()
+    {
+        // As above, on until the slide meets the wall under 0x0142's opening (y = 13.1): a concave
+        // corner, which stops the body at once; pushing on, it stays put bit for bit.
+        var mode = new PlayerMovementMode(HoltburgEngine(), new Vector3(139f, 10f, 94f), 0xA9B40143u, MathF.PI / 3f, MovementOptions.Player);
+        var walk = new MovementIntent(1f, 0f, 0f, false);
+        for (int i = 0; i < 100; i++)
+        {
+            mode.Update(walk, Frame);
+        }
+
+        Vector3 corner = mode.Position;
+        corner.X.Should().BeApproximately(142.1f - MoverBody.Player.Radius, 1e-3f, $"at {corner}");
+        corner.Y.Should().BeApproximately(13.1f - MoverBody.Player.Radius, 1e-3f, $"at {corner}");
+        for (int i = 0; i < 30; i++)
+        {
+            MovementFrame frame = mode.Update(walk, Frame);
+            frame.RefusedSteps.Should().Be(1, $"frame {i}: {frame}");
+            frame.LastRefusal.Should().Be(ResolveOutcome.Wall, $"frame {i}: the engine stops the body at once in the corner; {frame}");
+            frame.SlidSteps.Should().Be(0, $"frame {i}: {frame}");
+            frame.LastRefusalNormal.Z.Should().Be(0f, $"frame {i}: a wall's normal; {frame}");
+            frame.LastRefusalNormal.Length().Should().BeApproximately(1f, 1e-5f, $"frame {i}: {frame}");
+            mode.Position.Should().Be(corner, $"frame {i}: no jitter in the corner");
+        }
     }
 
     [Fact]

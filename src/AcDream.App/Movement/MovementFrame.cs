@@ -8,4 +8,6 @@ namespace AcDream.App.Movement;
 /// <param name="RefusedSteps">Steps the engine refused (<see cref="ResolveResult.IsRefused"/>); with swept moves a step stopped part way counts.</param>
 /// <param name="LastRefusal">The engine's <see cref="ResolveResult.Outcome"/> of the last refused step; null when none was refused.</param>
 /// <param name="LastRefusalNormal">The engine's <see cref="ResolveResult.SurfaceNormal"/> of the last refused step (zero when the engine names no surface, or none was refused).</param>
-public readonly record struct MovementFrame(int Steps, int RefusedSteps, ResolveOutcome? LastRefusal, Vector3 LastRefusalNormal);
+/// <param name="SlidSteps">Steps the engine answered <see cref="ResolveOutcome.Slid"/>: the body touched a wall (or, with walkable slope, a slope too steep) and moved on along it.</param>
+/// <param name="LastSlideNormal">The engine's <see cref="ResolveResult.SurfaceNormal"/> of the last slid step: a wall's unit normal (horizontal, towards the mover) or a slope's; zero when none slid.</param>
+public readonly record struct MovementFrame(int Steps, int RefusedSteps, ResolveOutcome? LastRefusal, Vector3 LastRefusalNormal, int SlidSteps = 0, Vector3 LastSlideNormal = default);

@@ -19,6 +19,10 @@ namespace AcDream.App.Movement;
 /// <see cref="MovementOptions.StepDownHeight"/> set, ground farther below leaves the mover airborne:
 /// gravity brings it down, and it lands when its Z reaches the ground (while airborne the mode asks
 /// the engine with a step down of 0, so the landing is exact).
+/// With <see cref="MovementOptions.Body"/> set (<see cref="MovementOptions.Player"/> has the player's,
+/// radius 0.48 m and 1.835 m tall; the default scene uses it) every step moves that body: it stops its
+/// radius short of walls and slides along them, and <see cref="Update"/> reports the steps the engine
+/// answered <see cref="ResolveOutcome.Slid"/> with the wall's normal. The body is kept while airborne.
 /// </remarks>
 public sealed class PlayerMovementMode
 {
@@ -56,7 +60,7 @@ public sealed class PlayerMovementMode
     /// <param name="position">Feet position, world metres.</param>
     /// <param name="cellId">The cell at <paramref name="position"/> (<c>0xXXYYCCCC</c>); for outdoors any outdoor number works, the engine recomputes it.</param>
     /// <param name="heading">Compass heading, radians (0 north, π/2 east).</param>
-    /// <param name="effects">The engine's opt-in effects this mover uses (default: none, the spec's literal engine).</param>
+    /// <param name="effects">The engine's opt-in effects this mover uses (default: none, the spec's literal engine with a point mover; <see cref="MovementOptions.Player"/> for a player, with its body).</param>
     /// <exception cref="ArgumentException">The position or heading is not finite.</exception>
     public PlayerMovementMode(PhysicsEngine engine, Vector3 position, uint cellId, float heading, MovementOptions effects = default)
     {
@@ -107,7 +111,7 @@ public sealed class PlayerMovementMode
     /// </remarks>
     /// <param name="intent">The player's intent, held for the whole frame.</param>
     /// <param name="frameSeconds">Frame time, seconds, ≥ 0 (fixed or variable); more than <see cref="MaxFrameSeconds"/> counts as <see cref="MaxFrameSeconds"/>.</param>
-    /// <returns>How many steps ran, how many the engine refused, and the engine's outcome and surface normal of the last refusal.</returns>
+    /// <returns>How many steps ran, how many the engine refused and how many it slid along a surface, with the engine's outcome and surface normal of the last refusal and the surface normal of the last slide.</returns>
     /// <exception cref="ArgumentOutOfRangeException">The frame time is negative or not finite.</exception>
     public MovementFrame Update(MovementIntent intent, float frameSeconds)
     {
@@ -124,9 +128,9 @@ public sealed class PlayerMovementMode
         frameSeconds = MathF.Min(frameSeconds, MaxFrameSeconds);
         int steps = Math.Max(1, (int)MathF.Ceiling(frameSeconds / MaxStepSeconds));
         float dt = frameSeconds / steps;
-        int refused = 0;
+        int refused = 0, slid = 0;
         ResolveOutcome? lastRefusal = null;
-        Vector3 lastNormal = default;
+        Vector3 lastNormal = default, lastSlide = default;
         for (int i = 0; i < steps; i++)
         {
             ResolveResult result = Step(intent, dt);
@@ -136,9 +140,14 @@ public sealed class PlayerMovementMode
                 lastRefusal = result.Outcome;
                 lastNormal = result.SurfaceNormal;
             }
+            else if (result.Outcome == ResolveOutcome.Slid)
+            {
+                slid++;
+                lastSlide = result.SurfaceNormal;
+            }
         }
 
-        return new MovementFrame(steps, refused, lastRefusal, lastNormal);
+        return new MovementFrame(steps, refused, lastRefusal, lastNormal, slid, lastSlide);
     }
 
     /// <summary>One step of <paramref name="dt"/> seconds; returns the engine's answer.</summary>

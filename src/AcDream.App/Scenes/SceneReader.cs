@@ -25,7 +25,14 @@ internal static class SceneReader
     public const float MaxStartDistance = 2 * PhysicsConstants.LandblockSize;
 
     private static readonly string[] SceneFields = ["name", "start", "legs", "notes", "effects"];
-    private static readonly string[] EffectFields = ["stepDownHeight", "walkableSlope", "sweepStepLength", "doorsOnly"];
+    /// <summary>Largest body radius a scene may give, metres.</summary>
+    public const float MaxBodyRadius = 10f;
+
+    /// <summary>Largest body height a scene may give, metres.</summary>
+    public const float MaxBodyHeight = 100f;
+
+    private static readonly string[] EffectFields = ["stepDownHeight", "walkableSlope", "sweepStepLength", "doorsOnly", "body"];
+    private static readonly string[] BodyFields = ["radius", "height"];
     private static readonly string[] StartFields = ["position", "heading"];
     private static readonly string[] LegFields = ["name", "to", "forward", "strafe", "turn", "run", "backward", "seconds"];
 
@@ -136,7 +143,7 @@ internal static class SceneReader
         }
     }
 
-    /// <summary><c>"effects"</c>: <c>"literal"</c>, <c>"player"</c>, or an object naming each effect.</summary>
+    /// <summary><c>"effects"</c>: <c>"literal"</c>, <c>"player"</c> (with the player's body), or an object naming each effect.</summary>
     private static MovementOptions ReadEffects(Context context, JsonElement element)
     {
         if (element.ValueKind == JsonValueKind.String)
@@ -156,7 +163,36 @@ internal static class SceneReader
             WalkableSlope = context.OptionalBool(element, "walkableSlope", "effects.walkableSlope"),
             SweepStepLength = element.TryGetProperty("sweepStepLength", out _) ? context.OptionalNumber(element, "sweepStepLength", "effects.sweepStepLength", 1f, 0.01f, 100f) : null,
             DoorsOnly = context.OptionalBool(element, "doorsOnly", "effects.doorsOnly"),
+            Body = element.TryGetProperty("body", out JsonElement body) ? ReadBody(context, body) : null,
         };
+    }
+
+    /// <summary>
+    /// <c>"effects.body"</c>: <c>"player"</c> (<see cref="MoverBody.Player"/>), <c>null</c> (a point, as
+    /// when it is absent), or <c>{ "radius": r, "height": h }</c> in metres, r in (0, <see cref="MaxBodyRadius"/>],
+    /// h in (0, <see cref="MaxBodyHeight"/>].
+    /// </summary>
+    private static MoverBody? ReadBody(Context context, JsonElement element)
+    {
+        switch (element.ValueKind)
+        {
+            case JsonValueKind.Null:
+                return null;
+            case JsonValueKind.String when element.GetString() == "player":
+                return MoverBody.Player;
+            case JsonValueKind.Object:
+                context.RequireObject(element, "effects.body", BodyFields);
+                foreach (string field in BodyFields)
+                {
+                    context.Require(element, field, $"effects.body.{field}");
+                }
+
+                float radius = context.OptionalNumber(element, "radius", "effects.body.radius", 0f, float.Epsilon, MaxBodyRadius);
+                float height = context.OptionalNumber(element, "height", "effects.body.height", 0f, float.Epsilon, MaxBodyHeight);
+                return new MoverBody(radius, height);
+            default:
+                throw context.Error("effects.body", element, "must be \"player\", null (a point) or { \"radius\": metres, \"height\": metres }");
+        }
     }
 
     private static SceneLeg ReadLeg(Context context, JsonElement leg, string path)

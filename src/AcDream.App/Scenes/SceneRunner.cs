@@ -53,6 +53,7 @@ internal static class SceneRunner
             int first = frame + 1;
             int limit = (int)MathF.Round(leg.Seconds * FramesPerSecond);
             var refusals = new Dictionary<ResolveOutcome, int>();
+            var slides = new List<Vector3>();
             bool reached = false;
             for (int n = 0; ; n++)
             {
@@ -104,7 +105,13 @@ internal static class SceneRunner
                     refusals[refusal] = refusals.GetValueOrDefault(refusal) + 1;
                 }
 
-                var sample = new FrameSample(frame, mode.Position, mode.CellId, mode.IsOnGround, moved.LastRefusal);
+                Vector3? slide = moved.SlidSteps > 0 ? moved.LastSlideNormal : null;
+                if (slide is Vector3 normal)
+                {
+                    slides.Add(normal);
+                }
+
+                var sample = new FrameSample(frame, mode.Position, mode.CellId, mode.IsOnGround, moved.LastRefusal, slide);
                 if (before.IsOnGround && sample.IsOnGround && before.Position.Z - sample.Position.Z > PlayerMovementMode.StepUpHeight)
                 {
                     drops.Add(new Drop(frame, before.Position.Z, before.CellId, sample.Position.Z, sample.CellId));
@@ -113,7 +120,7 @@ internal static class SceneRunner
                 samples.Add(sample);
             }
 
-            legs.Add(new LegResult(leg, first, frame, reached, refusals));
+            legs.Add(new LegResult(leg, first, frame, reached, refusals, slides));
             if (truncated)
             {
                 break;

@@ -9,7 +9,8 @@ namespace AcDream.App.Scenes;
 /// <param name="CellId">Cell id, <c>0xXXYYCCCC</c>.</param>
 /// <param name="IsOnGround">On terrain or a floor.</param>
 /// <param name="Refusal">The engine's outcome of this frame's last refused step; null when none was refused.</param>
-internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal);
+/// <param name="Slide">The engine's surface normal of this frame's last step answered <see cref="ResolveOutcome.Slid"/> (a wall's, horizontal, or a slope's); null when none slid.</param>
+internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null);
 
 /// <summary>How a leg ended.</summary>
 /// <param name="Leg">The leg.</param>
@@ -17,7 +18,8 @@ internal readonly record struct FrameSample(int Frame, Vector3 Position, uint Ce
 /// <param name="LastFrame">Last frame of the leg (FirstFrame − 1 when it took none).</param>
 /// <param name="Reached">Point leg: whether the point was reached; intent leg: whether it ran its full time.</param>
 /// <param name="Refusals">Frames with a refused move during the leg, by the engine's outcome.</param>
-internal sealed record LegResult(SceneLeg Leg, int FirstFrame, int LastFrame, bool Reached, IReadOnlyDictionary<ResolveOutcome, int> Refusals);
+/// <param name="Slides">The frames during the leg with a move the engine answered <see cref="ResolveOutcome.Slid"/>: the surface's normal the engine reported, one per such frame, in frame order.</param>
+internal sealed record LegResult(SceneLeg Leg, int FirstFrame, int LastFrame, bool Reached, IReadOnlyDictionary<ResolveOutcome, int> Refusals, IReadOnlyList<Vector3> Slides);
 
 /// <summary>A landblock registered in or removed from the engine.</summary>
 internal readonly record struct StreamingEvent(int Frame, uint LandblockId, bool Loaded);
@@ -82,6 +84,9 @@ internal sealed record WalkRecord(
 
     /// <summary>Frames over the whole walk whose move the engine refused with <paramref name="outcome"/>.</summary>
     public int RefusalCount(ResolveOutcome outcome) => Samples.Count(s => s.Refusal == outcome);
+
+    /// <summary>Frames over the whole walk with a move the engine answered <see cref="ResolveOutcome.Slid"/>.</summary>
+    public int SlideCount => Samples.Count(s => s.Slide is not null);
 
     /// <summary>The cells in the order visited, each with the frame it was entered (consecutive repeats collapsed).</summary>
     public IReadOnlyList<(int Frame, uint CellId)> CellVisits()

@@ -1,4 +1,5 @@
 using System.Globalization;
+using System.Numerics;
 using System.Text;
 using AcDream.Core.Physics;
 using AcDream.App.Movement;
@@ -51,11 +52,14 @@ internal static class WalkReport
         {
             string outcome = leg.Leg.To is null ? (leg.Reached ? "done" : "cut short") : (leg.Reached ? "reached" : "NOT reached");
             string refused = leg.Refusals.Count == 0 ? "" : "; refused " + string.Join(", ", leg.Refusals.OrderBy(r => r.Key).Select(r => $"{r.Value} × {Describe(r.Key)}"));
-            Line($"  {number++,2}. {leg.Leg.Name}: {outcome}, frames {leg.FirstFrame}-{leg.LastFrame}{refused}");
+            string slid = leg.Slides.Count == 0 ? "" : "; slid " + DescribeSlides(leg.Slides);
+            Line($"  {number++,2}. {leg.Leg.Name}: {outcome}, frames {leg.FirstFrame}-{leg.LastFrame}{slid}{refused}");
         }
 
         text.AppendLine();
         Line($"Refused moves: {string.Join(", ", Refusals.Select(o => $"{record.RefusalCount(o)} {Describe(o)}"))}.");
+        int wallSlides = record.Samples.Count(s => s.Slide is Vector3 n && IsWall(n));
+        Line($"Slid moves: {wallSlides} along walls, {record.SlideCount - wallSlides} along slopes' contours.");
         Line($"Airborne: {record.AirborneFrames} frames.");
         foreach (Fall fall in record.Falls())
         {
@@ -123,8 +127,62 @@ internal static class WalkReport
             on.Add("doors only");
         }
 
+        if (effects.Body is MoverBody body)
+        {
+            on.Add(FormattableString.Invariant($"a body (an upright cylinder of radius {body.Radius} m, {body.Height} m tall) that slides along walls"));
+        }
+
         return on.Count == 0 ? "none (the spec's literal engine)" : string.Join(", ", on);
     }
+
+    /// <summary>
+    /// A leg's slides, from the engine's normals (<see cref="ResolveResult.SurfaceNormal"/>, one per
+    /// slid frame, in frame order): along walls (a horizontal normal, pointing at the mover) and, with
+    /// walkable slope, along the contour of a slope too steep to climb (the slope's normal, with a Z).
+    /// Each kind gives its frames and its normal, or, when its normals differ (a rounded corner), how
+    /// many differ and the first and last, each rounded to 0.01.
+    /// </summary>
+    public static string DescribeSlides(IReadOnlyList<Vector3> normals)
+    {
+        var parts = new List<string>();
+        foreach (bool walls in (ReadOnlySpan<bool>)[true, false])
+        {
+            var distinct = new List<string>();
+            int frames = 0;
+            foreach (Vector3 n in normals)
+            {
+                if (IsWall(n) != walls)
+                {
+                    continue;
+                }
+
+                frames++;
+                string text = walls
+                    ? FormattableString.Invariant($"({Round(n.X):F2}, {Round(n.Y):F2})")
+                    : FormattableString.Invariant($"({Round(n.X):F2}, {Round(n.Y):F2}, {Round(n.Z):F2})");
+                if (!distinct.Contains(text))
+                {
+                    distinct.Add(text);
+                }
+            }
+
+            if (frames > 0)
+            {
+                string along = walls ? (distinct.Count == 1 ? "a wall" : "walls") : (distinct.Count == 1 ? "a slope's contour" : "slopes' contours");
+                parts.Add(distinct.Count == 1
+                    ? $"{frames} × along {along}, normal {distinct[0]}"
+                    : $"{frames} × along {along}, {distinct.Count} normals from {distinct[0]} to {distinct[^1]}");
+            }
+        }
+
+        return string.Join(", ", parts);
+    }
+
+    /// <summary>A slide's normal is a wall's when it is horizontal (the engine's walls are); a slope's has a Z.</summary>
+    private static bool IsWall(Vector3 normal) => normal.Z == 0f;
+
+    /// <summary>Rounded to 0.01, without a negative zero.</summary>
+    private static float Round(float value) => MathF.Round(value, 2) + 0f;
 
     /// <summary>Short text for one of the engine's outcomes, 1:1 (the engine's reason, not a guess).</summary>
     public static string Describe(ResolveOutcome outcome) => outcome switch
@@ -136,6 +194,7 @@ internal static class WalkReport
         ResolveOutcome.UnloadedAhead => "unloaded land ahead",
         ResolveOutcome.EdgeOfWorld => "edge of the world",
         ResolveOutcome.Moved => "moved",
+        ResolveOutcome.Slid => "slid",
         ResolveOutcome.Held => "held (land not loaded)",
         _ => outcome.ToString(),
     };

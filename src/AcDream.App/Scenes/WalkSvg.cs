@@ -10,7 +10,8 @@ namespace AcDream.App.Scenes;
 
 /// <summary>
 /// Draws a walk as SVG: a top-down map (terrain contours every 2 m, the Holtburg floor plans, the
-/// route coloured by cell, refused moves as red rings) and a side profile of Z over the frames.
+/// route coloured by cell, refused moves as red rings, and, with a body, the body's clearance where
+/// it touched a wall) and a side profile of Z over the frames.
 /// </summary>
 internal static class WalkSvg
 {
@@ -19,6 +20,9 @@ internal static class WalkSvg
     private const float MapMaxHeight = 620f;
     private const float ProfileHeight = 220f;
     private const float ContourInterval = 2f;
+
+    /// <summary>Stroke of the body's clearance circles: blue, apart from the route's cell colours and the red refusal rings.</summary>
+    private const string ClearanceColour = "#1565c0";
 
     /// <summary>A physics polygon is drawn as a wall outline when its unit normal's |Z| is below this (within about 11.5° of vertical). Drawing only; floors come from the engine.</summary>
     private const float WallMaxNormalZ = 0.2f;
@@ -51,10 +55,16 @@ internal static class WalkSvg
             map.Add(new XElement(Svg + "circle", Attr("cx", p.X), Attr("cy", p.Y), Attr("r", 4f), new XAttribute("fill", "none"), new XAttribute("stroke", "#d00"), Attr("stroke-width", 1.5f)));
         }
 
+        MoverBody? body = record.Scene.Effects.Body;
+        if (body is not null)
+        {
+            map.Add(Clearance(samples, body.Value.Radius * scale, s => Map(s.Position.X, s.Position.Y)));
+        }
+
         Vector2 start = Map(samples[0].Position.X, samples[0].Position.Y), end = Map(record.Final.Position.X, record.Final.Position.Y);
         map.Add(Label(start.X + 5, start.Y - 5, "start", 12));
         map.Add(Label(end.X + 5, end.Y + 14, "end", 12));
-        map.Add(Label(Margin, mapTop - 8, Invariant($"{record.Scene.Name}: top-down, north up, {ScaleText(scale)}; contours every {ContourInterval} m; red rings: refused moves"), 13));
+        map.Add(Label(Margin, mapTop - 8, Invariant($"{record.Scene.Name}: top-down, north up, {ScaleText(scale)}; contours every {ContourInterval} m; red rings: refused moves{(body is null ? "" : "; blue circles: the body at walls")}"), 13));
 
         // Profile: Z over frames.
         float profileTop = mapTop + mapHeight + 60f;
@@ -97,6 +107,16 @@ internal static class WalkSvg
         }
 
         legend.Add(Label(lx, ly, "outdoor cells: alternating greys", 11));
+        ly += 18f;
+        legend.Add(new XElement(Svg + "circle", Attr("cx", Margin + 5), Attr("cy", ly - 4), Attr("r", 4f), new XAttribute("fill", "none"), new XAttribute("stroke", "#d00"), Attr("stroke-width", 1.5f)));
+        legend.Add(Label(Margin + 14, ly, "refused move (the engine's outcome; the summary names it)", 11));
+        if (body is not null)
+        {
+            ly += 16f;
+            legend.Add(new XElement(Svg + "circle", Attr("cx", Margin + 5), Attr("cy", ly - 4), Attr("r", 4f), new XAttribute("fill", "none"), new XAttribute("stroke", ClearanceColour), Attr("stroke-width", 1f)));
+            legend.Add(Label(Margin + 14, ly, Invariant($"body's clearance where it touched a wall: a circle of its radius ({body.Value.Radius} m) at each frame the engine answered Slid along a wall, or Wall"), 11));
+        }
+
         float height = ly + 20f;
 
         var root = new XElement(Svg + "svg",
@@ -109,6 +129,31 @@ internal static class WalkSvg
             profile,
             legend);
         return new XDocument(new XDeclaration("1.0", "utf-8", null), root);
+    }
+
+    /// <summary>
+    /// The body's clearance where it touched a wall: a circle of the body's radius (<paramref name="radius"/>,
+    /// in pixels) around the feet at each frame the engine answered <see cref="ResolveOutcome.Slid"/>
+    /// along a wall (a horizontal normal; a slide along a slope's contour touched no wall) or refused as
+    /// <see cref="ResolveOutcome.Wall"/>. A frame whose circle would lie within a quarter of the radius of
+    /// the last one drawn is left out, so a long slide is a row of circles, not a solid band.
+    /// </summary>
+    private static XElement Clearance(IReadOnlyList<FrameSample> samples, float radius, Func<FrameSample, Vector2> place)
+    {
+        var group = new XElement(Svg + "g", new XAttribute("id", "body-clearance"), new XAttribute("fill", "none"), new XAttribute("stroke", ClearanceColour), Attr("stroke-width", 0.6f));
+        Vector2? last = null;
+        foreach (FrameSample sample in samples)
+        {
+            bool touched = sample.Slide is Vector3 normal ? normal.Z == 0f : sample.Refusal == ResolveOutcome.Wall;
+            Vector2 p = place(sample);
+            if (touched && (last is not Vector2 previous || Vector2.Distance(p, previous) >= radius / 4f))
+            {
+                group.Add(new XElement(Svg + "circle", Attr("cx", p.X), Attr("cy", p.Y), Attr("r", radius), new XElement(Svg + "title", Invariant($"frame {sample.Frame}: ({sample.Position.X:F3}, {sample.Position.Y:F3})"))));
+                last = p;
+            }
+        }
+
+        return group;
     }
 
     /// <summary>Indoor cells get distinct hues in order of first visit; outdoor cells alternate two greys.</summary>
