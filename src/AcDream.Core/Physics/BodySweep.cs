@@ -23,6 +23,14 @@ internal static class BodySweep
     /// </summary>
     private const float Glancing = 1e-6f;
 
+    /// <summary>
+    /// Metres: a leg of a slide shorter than this is not taken. Far below the world's float spacing
+    /// anywhere (15 µm at a landblock's far edge), so such a leg would not move the answer at all, and
+    /// a body pushing head-on into a wall at a heading with a rounding-sized sideways part is stopped
+    /// (<see cref="ResolveOutcome.Wall"/>), not reported as sliding in place.
+    /// </summary>
+    private const float MinLeg = 1e-6f;
+
     /// <summary>What a body's path holds besides its corner points: how many corners, and what it touched.</summary>
     public struct Path
     {
@@ -68,12 +76,16 @@ internal static class BodySweep
 
             if (t >= 1f)
             {
-                position += rest;
-                points[path.Count++] = position;
+                if (rest.LengthSquared() >= MinLeg * MinLeg || contact == 0)
+                {
+                    position += rest;
+                    points[path.Count++] = position;
+                }
+
                 break;
             }
 
-            if (t > 0f)
+            if (t > 0f && (rest * t).LengthSquared() >= MinLeg * MinLeg)
             {
                 position += rest * t;
                 points[path.Count++] = position;

@@ -65,4 +65,16 @@ public class BodySmokeTests
         (centre.X + 5f - r.Position.X).Should().BeApproximately(0.5f, 0.001f, r.ToString());
         r.CellId.Should().Be(cell);
     }
+
+    [Fact]
+    public void Resolve_HeadOnIntoAWallWithARoundingSizedSidewaysPart_IsStoppedNotSlidInPlace()
+    {
+        // A heading of east from MathF.SinCos(π/2) leaves a sideways part of about 3e-9 of the move.
+        (PhysicsEngine engine, uint cell, Vector3 centre) = Room();
+        ResolveResult first = engine.Resolve(centre + new Vector3(4f, 0, 0), cell, new Vector3(1f, 0, 0), 0.5f, WithBody);
+        ResolveResult r = engine.Resolve(first.Position, cell, new Vector3(0.06666667f, -2.9140927E-09f, 0), 0.5f, WithBody);
+        r.Outcome.Should().Be(ResolveOutcome.Wall, $"{first} then {r}");
+        r.Position.Should().Be(first.Position, $"{first} then {r}");
+        r.SurfaceNormal.X.Should().BeApproximately(-1f, 1e-4f, r.ToString());
+    }
 }
