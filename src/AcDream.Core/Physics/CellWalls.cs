@@ -7,7 +7,12 @@ namespace AcDream.Core.Physics;
 /// its height range and its bounds seen from above. Its vertices are a slice of
 /// <see cref="CellWalls.Vertices"/>.
 /// </summary>
-internal readonly record struct WallPolygon(int First, int Count, float ZMin, float ZMax, Vector2 Min, Vector2 Max);
+/// <remarks>
+/// A vertical rectangle (every vertex at one of the two ends along the wall and at its lowest or
+/// highest Z: most real walls) is the same segment <see cref="A"/>–<see cref="B"/> seen from above at
+/// every height it spans, so it needs no cutting to a band (<see cref="IsUpright"/>).
+/// </remarks>
+internal readonly record struct WallPolygon(int First, int Count, float ZMin, float ZMax, Vector2 Min, Vector2 Max, bool IsUpright, Vector2 A, Vector2 B);
 
 /// <summary>
 /// The walls of one cell, built once when the cell is: every physics polygon that is not a floor
@@ -83,11 +88,51 @@ internal sealed class CellWalls
                 max = Vector2.Max(max, new Vector2(p.X, p.Y));
             }
 
-            walls.Add(new WallPolygon(vertices.Count, v.Length, zMin, zMax, min, max));
+            (bool upright, Vector2 a, Vector2 b) = Upright(v, normal, zMin, zMax);
+            walls.Add(new WallPolygon(vertices.Count, v.Length, zMin, zMax, min, max, upright, a, b));
             vertices.AddRange(v);
         }
 
         return walls.Count == 0 ? None : new CellWalls([.. walls], [.. vertices]);
+    }
+
+    /// <summary>
+    /// Whether the polygon is a vertical rectangle: its normal horizontal (within 1e-4) and every vertex
+    /// at one of its two ends along the wall and at its lowest or highest Z (within
+    /// <see cref="PhysicsConstants.EdgeTolerance"/>); then the ends' points seen from above.
+    /// </summary>
+    private static (bool Upright, Vector2 A, Vector2 B) Upright(Vector3[] v, Vector3 normal, float zMin, float zMax)
+    {
+        var along = new Vector2(-normal.Y, normal.X);
+        if (MathF.Abs(normal.Z) > 1e-4f || along == Vector2.Zero)
+        {
+            return (false, default, default);
+        }
+
+        along = Vector2.Normalize(along);
+        int first = 0, last = 0;
+        for (int i = 1; i < v.Length; i++)
+        {
+            float at = Vector2.Dot(along, new Vector2(v[i].X, v[i].Y));
+            first = at < Vector2.Dot(along, new Vector2(v[first].X, v[first].Y)) ? i : first;
+            last = at > Vector2.Dot(along, new Vector2(v[last].X, v[last].Y)) ? i : last;
+        }
+
+        var a = new Vector2(v[first].X, v[first].Y);
+        var b = new Vector2(v[last].X, v[last].Y);
+        const float tol = PhysicsConstants.EdgeTolerance;
+        foreach (Vector3 p in v)
+        {
+            var xy = new Vector2(p.X, p.Y);
+            bool atAnEnd = Vector2.DistanceSquared(xy, a) <= tol * tol || Vector2.DistanceSquared(xy, b) <= tol * tol;
+            bool atTopOrBottom = MathF.Abs(p.Z - zMin) <= tol || MathF.Abs(p.Z - zMax) <= tol;
+            if (!atAnEnd || !atTopOrBottom)
+            {
+                return (false, default, default);
+            }
+        }
+
+        return (true, a, b);
     }
 
     private static bool CoversPortal(Vector3[] polygon, PortalShape[] portals)

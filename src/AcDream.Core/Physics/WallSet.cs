@@ -104,15 +104,35 @@ internal ref struct WallSet
     /// </summary>
     public readonly void Sweep(Vector2 p, Vector2 d, float radius, float zLow, float zHigh, ref float t, ref Vector2 normal)
     {
+        // This sweep's own box (the move segment grown by the radius and the contact tolerance): a wall
+        // outside it cannot be touched now, whatever the call's box says.
+        float grow = radius + PhysicsConstants.ContactTolerance;
+        Vector2 lo = Vector2.Min(p, p + d) - new Vector2(grow), hi = Vector2.Max(p, p + d) + new Vector2(grow);
         for (int i = 0; i < _count; i++)
         {
             (int slot, int index) = At(i);
             (LandblockEntry entry, Vector2 offset) = Slot(slot);
             CellWalls walls = entry.Cells[index].Walls;
+            Vector2 cellLo = lo - offset, cellHi = hi - offset;
+            if (walls.Min.X > cellHi.X || walls.Max.X < cellLo.X || walls.Min.Y > cellHi.Y || walls.Max.Y < cellLo.Y)
+            {
+                continue;
+            }
+
             ReadOnlySpan<Vector3> vertices = walls.Vertices;
             foreach (ref readonly WallPolygon wall in walls.Polygons.AsSpan())
             {
-                if (wall.ZMax > zLow && wall.ZMin < zHigh && Overlaps(wall.Min, wall.Max, offset))
+                if (wall.ZMax <= zLow || wall.ZMin >= zHigh
+                    || wall.Min.X > cellHi.X || wall.Max.X < cellLo.X || wall.Min.Y > cellHi.Y || wall.Max.Y < cellLo.Y)
+                {
+                    continue;
+                }
+
+                if (wall.IsUpright)
+                {
+                    BodySweep.SweepSegment(p, d, wall.A + offset, wall.B + offset, radius, ref t, ref normal);
+                }
+                else
                 {
                     BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, zLow, zHigh, ref t, ref normal);
                 }
