@@ -203,6 +203,21 @@ internal static class AccuracyReport
 
     private static readonly int[] Speeds = [1, 5, 10, 20, 50];
 
+    /// <summary>Frames per second of the obstacle course.</summary>
+    private const float CourseHz = 30f;
+
+    /// <summary>The step down of the course's configurations that have one (metres).</summary>
+    private const float StepDown = 1.5f;
+
+    /// <summary>The caller's gravity on the course for a mover left in the air (step down), m/s².</summary>
+    private const float Gravity = 9.81f;
+
+    /// <summary>
+    /// After <see cref="Run"/>: each course configuration's overall miss rate (percent of the courses
+    /// the truth stops in that the configuration gets past, all obstacles and speeds), for the chart.
+    /// </summary>
+    public static IReadOnlyList<(string Name, double MissPercent)> CourseMissRates { get; private set; } = [];
+
     /// <summary>
     /// "Past the far edge" means more than 5 cm past it: a mover stopped against the far wall of a
     /// pit stands up to the 0.2 mm edge tolerance beyond it, which is not getting past.
@@ -212,22 +227,40 @@ internal static class AccuracyReport
     private static void Course(TextWriter o)
     {
         const int Trials = 400;
-        const float Hz = 30f;
+        const float Hz = CourseHz;
         var configs = new (string Name, MovementOptions Options)[]
         {
             ("end-point (literal)", default),
             ("swept 0.48 m", new MovementOptions { SweepStepLength = 0.48f }),
             ("walkable slope", new MovementOptions { WalkableSlope = true }),
             ("swept 0.48 m + walkable slope", new MovementOptions { SweepStepLength = 0.48f, WalkableSlope = true }),
+            ("step down 1.5 m", new MovementOptions { StepDownHeight = StepDown }),
+            ("doors only", new MovementOptions { DoorsOnly = true }),
+            ("body (the player's)", new MovementOptions { Body = MoverBody.Player }),
+            ("Player without body", MovementOptions.Player with { Body = null }),
+            ("Player (all effects, body)", MovementOptions.Player),
         };
-        var reference = new MovementOptions { SweepStepLength = 0.01f, WalkableSlope = true };
+        // The truth: a point in 1 cm sub-steps with the walkable-slope limit; for a configuration with
+        // step down (which turns a drop into a fall), the same with step down 1.5 m and the caller's gravity.
+        var references = new MovementOptions[]
+        {
+            new() { SweepStepLength = 0.01f, WalkableSlope = true },
+            new() { SweepStepLength = 0.01f, WalkableSlope = true, StepDownHeight = StepDown },
+        };
+        int[] truthOf = [.. configs.Select(c => c.Options.StepDownHeight switch
+        {
+            null => 0,
+            StepDown => 1,
+            float other => throw new InvalidOperationException($"{c.Name}: step down {other} m has no truth here (only {StepDown} m)."),
+        })];
 
-        // misses[obstacle, speed, config], falseStops[...], stopCases[obstacle, speed], passCases[...]
+        // misses[obstacle, speed, config], falseStops[...], shouldStop[obstacle, speed, truth], shouldPass[...]
         var kinds = Enum.GetValues<Obstacle>();
         var misses = new int[kinds.Length, Speeds.Length, configs.Length];
         var falseStops = new int[kinds.Length, Speeds.Length, configs.Length];
-        var shouldStop = new int[kinds.Length, Speeds.Length];
-        var shouldPass = new int[kinds.Length, Speeds.Length];
+        var shouldStop = new int[kinds.Length, Speeds.Length, references.Length];
+        var shouldPass = new int[kinds.Length, Speeds.Length, references.Length];
+        var refPassed = new bool[references.Length];
         var random = new Random(5);
         var engine = new PhysicsEngine(World.Holtburg);
         foreach (Obstacle kind in kinds)
@@ -239,24 +272,28 @@ internal static class AccuracyReport
                 {
                     float step = Speeds[s] / Hz;
                     int frames = (int)MathF.Ceiling(course.Travel / step);
-                    bool refPassed = Walk(engine, course, step, frames, reference) > course.FarEdge + PassMargin;
-                    if (refPassed)
+                    for (int r = 0; r < references.Length; r++)
                     {
-                        shouldPass[(int)kind, s]++;
-                    }
-                    else
-                    {
-                        shouldStop[(int)kind, s]++;
+                        refPassed[r] = Walk(engine, course, step, frames, references[r]) > course.FarEdge + PassMargin;
+                        if (refPassed[r])
+                        {
+                            shouldPass[(int)kind, s, r]++;
+                        }
+                        else
+                        {
+                            shouldStop[(int)kind, s, r]++;
+                        }
                     }
 
                     for (int c = 0; c < configs.Length; c++)
                     {
                         bool passed = Walk(engine, course, step, frames, configs[c].Options) > course.FarEdge + PassMargin;
-                        if (passed && !refPassed)
+                        bool truth = refPassed[truthOf[c]];
+                        if (passed && !truth)
                         {
                             misses[(int)kind, s, c]++;
                         }
-                        else if (!passed && refPassed)
+                        else if (!passed && truth)
                         {
                             falseStops[(int)kind, s, c]++;
                         }
@@ -273,10 +310,13 @@ internal static class AccuracyReport
         o.WriteLine("- **pit**: a 0.2–1.5 m wide strip of floor 3 m below (a mover falls in and cannot climb out);");
         o.WriteLine("- **terrain cliff**: the game's triangle terrain rising 10–60 m over 24 m (slope 0.4–2.5; steeper than 1.125 is not walkable).");
         o.WriteLine();
-        o.WriteLine("The mover starts 0.5–4.5 m before the obstacle and is resolved frame by frame at `speed / 30` m per frame, step height 0.5 m.");
+        o.WriteLine("The mover starts 0.5–4.5 m before the obstacle and is resolved frame by frame at `speed / 30` m per frame, step height 0.5 m;");
+        o.WriteLine($"with step down, a mover left in the air falls under the caller's gravity ({Gravity} m/s², step down 0 while falling, as `MovementOptions.StepDownHeight` asks).");
         o.WriteLine("The truth is the most accurate configuration: 1 cm sub-steps with the walkable-slope limit. A **miss** is a run that ends beyond the");
         o.WriteLine("obstacle's far edge (by more than 5 cm) where the truth stopped before it; a **false stop** ends before it where the truth got past.");
-        o.WriteLine("Cells: `miss % / false-stop %` of the courses that should stop / pass.");
+        o.WriteLine($"A configuration with step down is judged against the same truth with step down {StepDown} m and gravity (a runner crosses a pit it");
+        o.WriteLine("would have snapped into: that is the effect, not an error); its should-stop / should-pass counts are in the summary below.");
+        o.WriteLine("Cells: `miss % / false-stop %` of the courses that should stop / pass (the row's counts: the truth without step down).");
         o.WriteLine();
         foreach (Obstacle kind in kinds)
         {
@@ -296,10 +336,10 @@ internal static class AccuracyReport
             o.WriteLine();
             for (int s = 0; s < Speeds.Length; s++)
             {
-                int stop = shouldStop[(int)kind, s], pass = shouldPass[(int)kind, s];
-                o.Write($"| {Speeds[s]} m/s ({F(Speeds[s] / Hz, "0.000")} m/frame; {stop} / {pass}) |");
+                o.Write($"| {Speeds[s]} m/s ({F(Speeds[s] / Hz, "0.000")} m/frame; {shouldStop[(int)kind, s, 0]} / {shouldPass[(int)kind, s, 0]}) |");
                 for (int c = 0; c < configs.Length; c++)
                 {
+                    int stop = shouldStop[(int)kind, s, truthOf[c]], pass = shouldPass[(int)kind, s, truthOf[c]];
                     o.Write($" {Pct(misses[(int)kind, s, c], stop)} / {Pct(falseStops[(int)kind, s, c], pass)} |");
                 }
 
@@ -309,7 +349,8 @@ internal static class AccuracyReport
             o.WriteLine();
         }
 
-        // Overall miss rate per configuration, for the table.
+        // Overall miss rate per configuration, for the table and the chart.
+        var missRates = new List<(string, double)>();
         o.WriteLine("| configuration | misses, all obstacles and speeds | misses at ≥ 20 m/s | false stops, all |");
         o.WriteLine("| --- | ---: | ---: | ---: |");
         for (int c = 0; c < configs.Length; c++)
@@ -320,19 +361,22 @@ internal static class AccuracyReport
                 for (int s = 0; s < Speeds.Length; s++)
                 {
                     m += misses[(int)kind, s, c];
-                    stop += shouldStop[(int)kind, s];
+                    stop += shouldStop[(int)kind, s, truthOf[c]];
                     f += falseStops[(int)kind, s, c];
-                    pass += shouldPass[(int)kind, s];
+                    pass += shouldPass[(int)kind, s, truthOf[c]];
                     if (Speeds[s] >= 20)
                     {
                         mFast += misses[(int)kind, s, c];
-                        stopFast += shouldStop[(int)kind, s];
+                        stopFast += shouldStop[(int)kind, s, truthOf[c]];
                     }
                 }
             }
 
             o.WriteLine($"| {configs[c].Name} | {Pct(m, stop)} ({m}/{stop}) | {Pct(mFast, stopFast)} ({mFast}/{stopFast}) | {Pct(f, pass)} ({f}/{pass}) |");
+            missRates.Add((configs[c].Name, 100.0 * m / stop));
         }
+
+        CourseMissRates = missRates;
 
         o.WriteLine();
     }
@@ -400,11 +444,25 @@ internal static class AccuracyReport
         Vector3 pos = course.Start;
         uint cell = course.StartCell;
         var delta = new Vector3(course.Direction * step, 0f);
+        MovementOptions falling = options.StepDownHeight is null ? options : options with { StepDownHeight = 0f };
+        float fallSpeed = 0f;
         for (int f = 0; f < frames; f++)
         {
-            ResolveResult r = engine.Resolve(pos, cell, delta, World.PlayerStepUp, in options);
+            MovementOptions now = fallSpeed > 0f ? falling : options;
+            ResolveResult r = engine.Resolve(pos, cell, delta, World.PlayerStepUp, in now);
             pos = r.Position;
             cell = r.CellId;
+
+            // The caller's gravity: only step down leaves a mover in the air above the ground here.
+            if (options.StepDownHeight is not null && !r.IsOnGround)
+            {
+                fallSpeed += Gravity / CourseHz;
+                pos.Z -= fallSpeed / CourseHz;
+            }
+            else
+            {
+                fallSpeed = 0f;
+            }
         }
 
         return Vector2.Dot(new Vector2(pos.X - course.Start.X, pos.Y - course.Start.Y), course.Direction);

@@ -6,11 +6,14 @@ using BenchmarkDotNet.Running;
 using BenchmarkDotNet.Toolchains.InProcess.Emit;
 using Perfolizer.Horology;
 
-// `--accuracy`: the accuracy report (section 3 of docs/accuracy-vs-time.md); anything else goes to
+// `--accuracy`: the accuracy report (section 3 of docs/accuracy-vs-time.md) and its chart
+// (`--chart file.svg`, default accuracy-vs-time.svg; the costs from BenchmarkDotNet's CSV reports in
+// `--results folder`, default BenchmarkDotNet.Artifacts/results); anything else goes to
 // BenchmarkDotNet (`--filter '*SampleZ*'`, `--list flat`, ...). See README.md in this folder.
 if (args.Contains("--accuracy"))
 {
     AccuracyReport.Run(Console.Out);
+    AccuracyChart.Write(Console.Out, Option("--chart") ?? "accuracy-vs-time.svg", Option("--results") ?? Path.Combine("BenchmarkDotNet.Artifacts", "results"));
     return 0;
 }
 
@@ -43,3 +46,9 @@ IConfig config = DefaultConfig.Instance
 
 BenchmarkSwitcher.FromAssembly(typeof(World).Assembly).Run(args, config);
 return 0;
+
+string? Option(string name)
+{
+    int i = Array.IndexOf(args, name);
+    return i >= 0 && i + 1 < args.Length ? args[i + 1] : null;
+}

@@ -6,9 +6,10 @@ namespace AcDream.Core.Benchmarks;
 
 /// <summary>
 /// One Resolve per mover per frame: the literal four-argument call, each opt-in effect on alone, and
-/// all of them (<see cref="MovementOptions.Player"/>). Frame moves are 0.1..0.3 m (walking and
-/// running at 30 Hz), shorter than a 0.48 m sweep; the <c>*_2m</c> pair moves 2 m (a remote
-/// entity's catch-up), where the sweep takes 5 sub-steps.
+/// all of them (<see cref="MovementOptions.Player"/>, with the player's body since issue 10), all of
+/// them but the body, and the body alone. Frame moves are 0.1..0.3 m (walking and running at 30 Hz),
+/// shorter than a 0.48 m sweep; the <c>*_2m</c> pair moves 2 m (a remote entity's catch-up), where
+/// the sweep takes 5 sub-steps. <see cref="BodyIndoorBenchmarks"/> has the body's own courses.
 /// </summary>
 [MemoryDiagnoser]
 public abstract class ResolveBenchmarks
@@ -21,6 +22,16 @@ public abstract class ResolveBenchmarks
     private static readonly MovementOptions SweptOnly = new() { SweepStepLength = 0.48f };
     private static readonly MovementOptions DoorsOnlyOnly = new() { DoorsOnly = true };
     private static readonly MovementOptions Player = MovementOptions.Player;
+    private static readonly MovementOptions PlayerWithoutBody = MovementOptions.Player with { Body = null };
+    private static readonly MovementOptions BodyOnlyOptions = new() { Body = MoverBody.Player };
+
+    protected static ref readonly MovementOptions PlayerOptions => ref Player;
+
+    protected static ref readonly MovementOptions NoBodyOptions => ref PlayerWithoutBody;
+
+    protected static ref readonly MovementOptions BodyOptions => ref BodyOnlyOptions;
+
+    protected static ref readonly MovementOptions NoOptions => ref None;
 
     protected PhysicsEngine Engine { get; set; } = null!;
 
@@ -62,6 +73,14 @@ public abstract class ResolveBenchmarks
     [Benchmark(OperationsPerInvoke = Moves)]
     public float AllEffects() => Run(Deltas, in Player);
 
+    /// <summary><see cref="MovementOptions.Player"/> without its body: every effect of issues 5 to 9.</summary>
+    [Benchmark(OperationsPerInvoke = Moves)]
+    public float AllEffectsNoBody() => Run(Deltas, in PlayerWithoutBody);
+
+    /// <summary>The player's body alone (<see cref="MoverBody.Player"/>, no other effect).</summary>
+    [Benchmark(OperationsPerInvoke = Moves)]
+    public float BodyOnly() => Run(Deltas, in BodyOnlyOptions);
+
     [Benchmark(OperationsPerInvoke = Moves)]
     public float Literal_2m() => Run(LongDeltas, in None);
 
@@ -77,6 +96,52 @@ public abstract class ResolveBenchmarks
         }
 
         return sum;
+    }
+
+    /// <summary>
+    /// Throws unless the movers are on open ground: with no wall near, the body alone answers bit for
+    /// bit as no effect, and <c>Player</c> as <c>Player</c> without a body except where a slope too
+    /// steep to climb makes the body slide along its contour.
+    /// </summary>
+    protected void CheckOpenGround()
+    {
+        int contour = 0;
+        for (int i = 0; i < Moves; i++)
+        {
+            foreach (Vector3[] deltas in new[] { Deltas, LongDeltas })
+            {
+                ResolveResult none = Engine.Resolve(Positions[i], CellIds[i], deltas[i], World.PlayerStepUp, in NoOptions);
+                ResolveResult body = Engine.Resolve(Positions[i], CellIds[i], deltas[i], World.PlayerStepUp, in BodyOptions);
+                ResolveResult noBody = Engine.Resolve(Positions[i], CellIds[i], deltas[i], World.PlayerStepUp, in NoBodyOptions);
+                ResolveResult player = Engine.Resolve(Positions[i], CellIds[i], deltas[i], World.PlayerStepUp, in PlayerOptions);
+                if (body != none)
+                {
+                    throw new InvalidOperationException($"Mover {i} at {Positions[i]} moving {deltas[i]} is not on open ground: with the body {body}, without {none}.");
+                }
+
+                if (player != noBody)
+                {
+                    contour += noBody.Outcome == ResolveOutcome.SlopeTooSteep && player.Outcome is ResolveOutcome.Slid or ResolveOutcome.SlopeTooSteep
+                        ? 1
+                        : throw new InvalidOperationException($"Mover {i} at {Positions[i]} moving {deltas[i]}: Player {player}, Player without a body {noBody}, and not a steep slope.");
+                }
+            }
+        }
+
+        Console.WriteLine($"// outdoor movers on open ground: the body alone answers as no effect for all {2 * Moves} moves (0.1–0.3 m and 2 m); Player differs from Player without a body on {contour} (steep slopes, slid along the contour); Player's outcomes: {Outcomes(PlayerOptions)}");
+    }
+
+    /// <summary>How many of the movers' 0.1–0.3 m moves end with each outcome under <paramref name="options"/> (for the setup's log).</summary>
+    protected string Outcomes(in MovementOptions options)
+    {
+        var counts = new SortedDictionary<ResolveOutcome, int>();
+        for (int i = 0; i < Moves; i++)
+        {
+            ResolveOutcome outcome = Engine.Resolve(Positions[i], CellIds[i], Deltas[i], World.PlayerStepUp, in options).Outcome;
+            counts[outcome] = counts.GetValueOrDefault(outcome) + 1;
+        }
+
+        return string.Join(", ", counts.Select(kv => $"{kv.Key} {kv.Value}"));
     }
 
     private static float Sum(ResolveResult r) => r.Position.X + r.Position.Z + r.CellId + (r.IsOnGround ? 1f : 0f);
@@ -116,6 +181,8 @@ public class ResolveOutdoorBenchmarks : ResolveBenchmarks
             Deltas[i] = World.RandomDelta(random, 0.1f, 0.3f);
             LongDeltas[i] = World.RandomDelta(random, 2f, 2f);
         }
+
+        CheckOpenGround();
     }
 }
 
@@ -128,25 +195,17 @@ public class ResolveIndoorBenchmarks : ResolveBenchmarks
         var random = new Random(5);
         var fixtures = World.HoltburgFixtures();
         List<CellSurface> surfaces = World.Surfaces(fixtures);
-        Engine = new PhysicsEngine(World.Holtburg);
-        Engine.AddLandblock(World.Holtburg, new TerrainSurface(new byte[81], World.ConstantTable(World.HoltburgGroundZ), World.Holtburg), surfaces);
-        Engine.AddLandblock(0xA9B3FFFFu, new TerrainSurface(new byte[81], World.ConstantTable(World.HoltburgGroundZ), 0xA9B3FFFFu), []);
+        Engine = World.IndoorEngine(surfaces);
 
-        for (int i = 0; i < Moves;)
+        List<World.WallFace> walls = World.Walls(fixtures);
+        int redrawn = 0;
+        for (int i = 0; i < Moves; i++)
         {
-            int c = random.Next(fixtures.Count);
-            (Vector2 min, Vector2 max) = World.Bounds(fixtures[c]);
-            float x = min.X + (random.NextSingle() * (max.X - min.X)), y = min.Y + (random.NextSingle() * (max.Y - min.Y));
-            if (surfaces[c].SampleFloorZ(x, y) is not float z)
-            {
-                continue; // no floor there (a wall's footprint, a shaft): draw again
-            }
-
-            Positions[i] = new Vector3(x, y, z);
-            CellIds[i] = surfaces[c].CellId;
+            (Positions[i], CellIds[i]) = World.IndoorStart(random, fixtures, surfaces, walls, ref redrawn);
             Deltas[i] = World.RandomDelta(random, 0.1f, 0.3f);
             LongDeltas[i] = World.RandomDelta(random, 2f, 2f);
-            i++;
         }
+
+        Console.WriteLine($"// indoor movers: {redrawn} starts redrawn because the player's body would overlap a wall; outcomes with the body: {Outcomes(BodyOptions)}; with Player: {Outcomes(PlayerOptions)}");
     }
 }

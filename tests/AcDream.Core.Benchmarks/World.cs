@@ -114,6 +114,47 @@ internal static class World
     public static Vector3[] Wall(float x0, float y0, float x1, float y1, float z0, float z1) =>
         [new(x0, y0, z0), new(x1, y1, z0), new(x1, y1, z1), new(x0, y0, z1)];
 
+    /// <summary>
+    /// The indoor world: the cells on flat terrain at <see cref="HoltburgGroundZ"/> in Holtburg, and the
+    /// empty landblock south of it (some cells reach across the seam).
+    /// </summary>
+    public static PhysicsEngine IndoorEngine(List<CellSurface> surfaces)
+    {
+        var engine = new PhysicsEngine(Holtburg);
+        engine.AddLandblock(Holtburg, new TerrainSurface(new byte[81], ConstantTable(HoltburgGroundZ), Holtburg), surfaces);
+        engine.AddLandblock(0xA9B3FFFFu, new TerrainSurface(new byte[81], ConstantTable(HoltburgGroundZ), 0xA9B3FFFFu), []);
+        return engine;
+    }
+
+    /// <summary>
+    /// A random point on a floor of a random real cell where the player's body
+    /// (<see cref="MoverBody.Player"/>) stands clear of every wall (<see cref="Clearance"/> at least its
+    /// radius between the step height and its top): a body never starts a frame inside a wall.
+    /// </summary>
+    public static (Vector3 Position, uint CellId) IndoorStart(
+        Random random, List<CellFixtureReader.FixtureCell> fixtures, List<CellSurface> surfaces, List<WallFace> walls, ref int redrawn)
+    {
+        MoverBody body = MoverBody.Player;
+        while (true)
+        {
+            int c = random.Next(fixtures.Count);
+            (Vector2 min, Vector2 max) = Bounds(fixtures[c]);
+            float x = min.X + (random.NextSingle() * (max.X - min.X)), y = min.Y + (random.NextSingle() * (max.Y - min.Y));
+            if (surfaces[c].SampleFloorZ(x, y) is not float z)
+            {
+                continue; // no floor there (a wall's footprint, a shaft): draw again
+            }
+
+            if (Clearance(walls, new Vector2(x, y), z + PlayerStepUp, z + body.Height) < body.Radius)
+            {
+                redrawn++;
+                continue; // the body would start inside a wall
+            }
+
+            return (new Vector3(x, y, z), surfaces[c].CellId);
+        }
+    }
+
     /// <summary>The 22 real Holtburg cells, in id order.</summary>
     public static List<CellFixtureReader.FixtureCell> HoltburgFixtures()
     {
@@ -155,6 +196,98 @@ internal static class World
         }
 
         return (min, max);
+    }
+
+    /// <summary>
+    /// One non-floor physics polygon of a real cell (a wall, a ceiling, a steep face), landblock-local,
+    /// with its unit winding normal and its height range: what the body may meet. Computed here from
+    /// the fixtures, independently of the engine, to place movers and check where they are.
+    /// </summary>
+    public sealed record WallFace(uint CellId, Vector2[] Outline, Vector3 Normal, float ZMin, float ZMax)
+    {
+        /// <summary>Vertical (a wall proper, not a ceiling or a slope).</summary>
+        public bool IsVertical => MathF.Abs(Normal.Z) < 0.05f;
+    }
+
+    /// <summary>Every non-floor physics polygon (unit normal Z below <see cref="PhysicsConstants.FloorZ"/>) of the fixtures.</summary>
+    public static List<WallFace> Walls(IEnumerable<CellFixtureReader.FixtureCell> fixtures)
+    {
+        var walls = new List<WallFace>();
+        foreach (CellFixtureReader.FixtureCell cell in fixtures)
+        {
+            Quaternion q = Quaternion.Normalize(cell.EnvCell.Position.Orientation);
+            foreach (Polygon polygon in cell.CellStruct.PhysicsPolygons.Values)
+            {
+                var v = new Vector3[polygon.VertexIds.Count];
+                for (int i = 0; i < v.Length; i++)
+                {
+                    v[i] = cell.EnvCell.Position.Origin + Vector3.Transform(cell.CellStruct.VertexArray.Vertices[(ushort)polygon.VertexIds[i]].Origin, q);
+                }
+
+                Vector3 normal = Vector3.Zero; // Newell's method
+                for (int i = 0; i < v.Length; i++)
+                {
+                    Vector3 a = v[i], b = v[(i + 1) % v.Length];
+                    normal += new Vector3((a.Y - b.Y) * (a.Z + b.Z), (a.Z - b.Z) * (a.X + b.X), (a.X - b.X) * (a.Y + b.Y));
+                }
+
+                if (normal.Length() < 1e-6f || (normal = Vector3.Normalize(normal)).Z >= PhysicsConstants.FloorZ)
+                {
+                    continue;
+                }
+
+                walls.Add(new WallFace(
+                    cell.CellId,
+                    [.. v.Select(p => new Vector2(p.X, p.Y))],
+                    normal,
+                    v.Min(p => p.Z),
+                    v.Max(p => p.Z)));
+            }
+        }
+
+        return walls;
+    }
+
+    /// <summary>
+    /// The horizontal distance from <paramref name="p"/> to the nearest of <paramref name="walls"/>
+    /// whose height range overlaps (<paramref name="zLow"/>, <paramref name="zHigh"/>), each taken whole
+    /// (conservative: a polygon reaching into the band counts with all of its outline); 0 inside one's outline.
+    /// </summary>
+    public static float Clearance(List<WallFace> walls, Vector2 p, float zLow, float zHigh)
+    {
+        float best = float.MaxValue;
+        foreach (WallFace w in walls)
+        {
+            if (w.ZMax <= zLow || w.ZMin >= zHigh)
+            {
+                continue;
+            }
+
+            bool inside = false;
+            Vector2[] o = w.Outline;
+            for (int i = 0, j = o.Length - 1; i < o.Length; j = i++)
+            {
+                best = MathF.Min(best, SegmentDistance(p, o[j], o[i]));
+                if ((o[i].Y > p.Y) != (o[j].Y > p.Y) && p.X < o[j].X + ((o[i].X - o[j].X) * (p.Y - o[j].Y) / (o[i].Y - o[j].Y)))
+                {
+                    inside = !inside;
+                }
+            }
+
+            if (inside)
+            {
+                return 0f;
+            }
+        }
+
+        return best;
+    }
+
+    private static float SegmentDistance(Vector2 p, Vector2 a, Vector2 b)
+    {
+        Vector2 ab = b - a;
+        float t = ab.LengthSquared() > 0f ? Math.Clamp(Vector2.Dot(p - a, ab) / ab.LengthSquared(), 0f, 1f) : 0f;
+        return Vector2.Distance(p, a + (t * ab));
     }
 
     /// <summary>A random horizontal move of length in [min, max] metres.</summary>
