@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -15,6 +16,7 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
     /// landblock-local, in the mover's landblock (its cell's indoors). False when the
     /// mover's landblock is not loaded (no walls are known: the point move decides).
     /// </summary>
+    [SkipLocalsInit] // the stack buffers are written before they are read
     public bool Plan(Vector3 position, uint cellId, Vector2 delta, float stepUp, MoverBody body, Span<Vector2> points, ref BodySweep.Path path)
     {
         int lbX, lbY;
@@ -36,8 +38,14 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         }
 
         float radius = body.Radius + Skin(lbX, lbY, local, delta.Length() + body.Radius);
+        float reach = delta.Length() + radius + PhysicsConstants.ContactTolerance;
+        if (!CellIds.IsIndoor(cellId) && !AnyWallNear(entry, local, reach) && !NearSeam(local, reach))
+        {
+            return false; // open ground: no wall in reach, the point move is the answer
+        }
+
         Span<int> cells = stackalloc int[PhysicsConstants.MaxBodyCells];
-        var walls = new WallSet(cells, local, delta.Length() + radius + PhysicsConstants.ContactTolerance);
+        var walls = new WallSet(cells, local, reach);
         int slot = walls.AddLandblock(entry, Vector2.Zero);
         if (CellIds.IsIndoor(cellId))
         {
@@ -66,6 +74,35 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         float largest = MathF.Max(MathF.Max(MathF.Abs(world.X), MathF.Abs(world.Y)), MathF.Max(MathF.Abs(local.X), MathF.Abs(local.Y))) + reach;
         return PhysicsConstants.BodySkin + (MathF.BitIncrement(largest) - largest);
     }
+
+    /// <summary>Outdoors: whether any cell's walls over the outdoor squares the box (<paramref name="centre"/> ± <paramref name="reach"/>) covers overlap it.</summary>
+    private static bool AnyWallNear(LandblockEntry entry, Vector2 centre, float reach)
+    {
+        Vector2 min = centre - new Vector2(reach), max = centre + new Vector2(reach);
+        int x0 = CellIds.OutdoorColumn(min.X), x1 = CellIds.OutdoorColumn(max.X);
+        int y0 = CellIds.OutdoorColumn(min.Y), y1 = CellIds.OutdoorColumn(max.Y);
+        for (int cx = x0; cx <= x1; cx++)
+        {
+            for (int cy = y0; cy <= y1; cy++)
+            {
+                foreach (int cell in entry.WallBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
+                {
+                    CellWalls walls = entry.Cells[cell].Walls;
+                    if (walls.Min.X <= max.X && walls.Max.X >= min.X && walls.Min.Y <= max.Y && walls.Max.Y >= min.Y)
+                    {
+                        return true;
+                    }
+                }
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>Whether the box reaches across one of the landblock's seams (a neighbour's walls may be in it).</summary>
+    private static bool NearSeam(Vector2 centre, float reach) =>
+        centre.X - reach < 0f || centre.Y - reach < 0f
+        || centre.X + reach > PhysicsConstants.LandblockSize || centre.Y + reach > PhysicsConstants.LandblockSize;
 
     /// <summary>The mover's cell and every cell reached from it through a portal whose bounds the move's box overlaps, breadth first.</summary>
     private static void GatherIndoors(ref WallSet walls, int slot, LandblockEntry entry, int cellIndex)

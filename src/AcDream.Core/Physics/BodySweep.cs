@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -205,6 +206,7 @@ internal static class BodySweep
     /// Sweeps against one wall polygon (its vertices plus <paramref name="offset"/> in the move's
     /// frame), cut to the band first: the part of the polygon between the two heights, seen from above.
     /// </summary>
+    [SkipLocalsInit] // the cut buffers are written before they are read
     public static void SweepPolygon(
         ReadOnlySpan<Vector3> vertices, Vector2 offset, Vector2 p, Vector2 d, float radius, float zLow, float zHigh,
         ref float t, ref Vector2 normal)

@@ -305,6 +305,7 @@ public sealed class PhysicsEngine
     /// the slope's contour once (<paramref name="contourLeft"/>).
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve, so a call without a body pays nothing for it
+    [SkipLocalsInit] // the path's points are written before they are read
     private ResolveResult ResolveWithBody(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, bool contourLeft)
     {
         Span<Vector2> points = stackalloc Vector2[PhysicsConstants.MaxBodyContacts + 2];
