@@ -15,6 +15,20 @@ namespace AcDream.Core.Physics;
 /// </summary>
 internal static class BodySweep
 {
+    /// <summary>
+    /// A move that approaches a wall it touches by less than this fraction of its length moves along
+    /// it, not into it: what a slide's projection onto the wall leaves is float residue of either sign,
+    /// and taking it for a new contact stopped a body sliding along one wall as if in a corner.
+    /// </summary>
+    private const float ParallelTolerance = 1e-5f;
+
+    /// <summary>
+    /// A slide that points into the wall touched before by more than this fraction of its length is in
+    /// a concave corner; less is the same wall touched again (a wall's end, whose normal the float
+    /// rounding of the position turns by ~1e-5 rad between two touches).
+    /// </summary>
+    private const float ConcaveTolerance = 1e-3f;
+
     /// <summary>What a body's path holds besides its corner points: how many corners, and what it touched.</summary>
     public struct Path
     {
@@ -75,7 +89,7 @@ internal static class BodySweep
             path.Normal = normal;
             rest *= 1f - t;
             rest -= Vector2.Dot(rest, normal) * normal; // along the wall: never longer than before
-            if (contact > 0 && Vector2.Dot(rest, previous) < 0f)
+            if (contact > 0 && Vector2.Dot(rest, previous) < -ConcaveTolerance * rest.Length())
             {
                 break; // into the wall touched before: a concave corner stops the body
             }
@@ -89,7 +103,7 @@ internal static class BodySweep
     /// disc of <paramref name="radius"/> centred on the moving point touches the segment a–b, and the
     /// unit normal from the segment to the centre there. A disc already touching (within
     /// <see cref="PhysicsConstants.ContactTolerance"/>) and moving towards it is stopped at t = 0; one
-    /// moving away or along it is free.
+    /// moving away or along it (within <see cref="ParallelTolerance"/>) is free.
     /// </summary>
     public static void SweepSegment(Vector2 p, Vector2 d, Vector2 a, Vector2 b, float radius, ref float t, ref Vector2 normal)
     {
@@ -101,8 +115,11 @@ internal static class BodySweep
         float touch = radius + PhysicsConstants.ContactTolerance;
         if (distanceSquared < touch * touch)
         {
-            Vector2 n = distanceSquared > 0f ? away / MathF.Sqrt(distanceSquared) : OffsetNormal(ab, -d);
-            if (Vector2.Dot(d, n) < 0f && t > 0f)
+            Vector2 n = distanceSquared == 0f ? OffsetNormal(ab, -d)
+                : u0 > 0f && u0 < 1f ? OffsetNormal(ab, away) // beside the segment: its own normal, the same at every point (and as the offset lines' below)
+                : away / MathF.Sqrt(distanceSquared);          // at an end: the circle's
+            float into = Vector2.Dot(d, n);
+            if (into < 0f && into * into > ParallelTolerance * ParallelTolerance * d.LengthSquared() && t > 0f)
             {
                 (t, normal) = (0f, n);
             }
