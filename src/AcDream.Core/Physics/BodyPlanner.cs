@@ -34,7 +34,8 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
             return false;
         }
 
-        float radius = body.Radius + Skin(lbX, lbY, local, delta.Length() + body.Radius);
+        float skin = Skin(lbX, lbY, local, delta.Length() + body.Radius);
+        float radius = body.Radius + skin;
         Span<int> cells = stackalloc int[PhysicsConstants.MaxBodyCells];
         var walls = new WallSet(cells, local, delta.Length() + radius + PhysicsConstants.ContactTolerance);
         int slot = walls.AddLandblock(entry, Vector2.Zero);
@@ -49,7 +50,7 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
             GatherAcrossSeams(ref walls, lbX, lbY);
         }
 
-        BodySweep.Slide(in walls, local, delta, radius, position.Z + stepUp, position.Z + body.Height, points, ref path);
+        BodySweep.Slide(in walls, local, delta, radius, 0.5f * skin, position.Z + stepUp, position.Z + body.Height, points, ref path);
         return true;
     }
 

@@ -100,9 +100,10 @@ internal ref struct WallSet
     /// <summary>
     /// Sweeps the body (contact radius <paramref name="radius"/>) from <paramref name="p"/> along
     /// <paramref name="d"/> against every gathered wall in the band: the earliest contact below
-    /// <paramref name="t"/>, with its normal.
+    /// <paramref name="t"/>, with its normal; and the deepest overlap at <paramref name="p"/> beyond
+    /// <paramref name="depth"/>, with the normal out of it.
     /// </summary>
-    public readonly void Sweep(Vector2 p, Vector2 d, float radius, float zLow, float zHigh, ref float t, ref Vector2 normal)
+    public readonly void Sweep(Vector2 p, Vector2 d, float radius, float zLow, float zHigh, ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
     {
         for (int i = 0; i < _count; i++)
         {
@@ -114,7 +115,7 @@ internal ref struct WallSet
             {
                 if (wall.ZMax > zLow && wall.ZMin < zHigh && Overlaps(wall.Min, wall.Max, offset))
                 {
-                    BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, zLow, zHigh, ref t, ref normal);
+                    BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
                 }
             }
         }
