@@ -102,4 +102,31 @@ public class BodySlideTests
             }
         }
     }
+
+    [Theory]
+    [InlineData(17f)]
+    [InlineData(52f)]
+    [InlineData(128f)]
+    public void Resolve_LongSweptMovesAtTheWorldsFarCorner_EndWhereThePathEnds(float yaw)
+    {
+        // The global frame at landblock 0xFEFE (float spacing 3.9 mm), the player's options (sub-steps of
+        // 0.48 m): 5 m moves (50 m/s at 10 Hz) pushing at a wall at 63°, and along it, each frame within
+        // 1 mm + 4 spacings of the reference and never into the wall. (Defect: each sub-step and path corner
+        // was rounded to the world frame from the last one's rounded answer, so a 5 m move's eleven roundings
+        // added up to several centimetres off its path, and into the wall.)
+        foreach (bool along in new[] { false, true })
+        {
+            (BodyCourse course, Quaternion q, Vector3 cellOrigin) = SquareRoom(100, yaw, 0xFE, 0xFE, global: true);
+            Vector3 pos = World(course, q, cellOrigin, along ? 99.5f - 0.01f : 90, 2);
+            uint cell = course.Areas[0].Cell;
+            Vector3 delta = Vector3.Transform(Vector3.Normalize(along ? new Vector3(0, 1, 0) : new Vector3(1, 2, 0)), q) * 5f;
+            for (int f = 0; f < 18; f++)
+            {
+                BodyCall call = BodyCheck.Compare(course, pos, cell, delta, Step, MovementOptions.Player);
+                call.Overlap.Should().BeLessThanOrEqualTo(BodyCheck.OverlapLimit, $"{(along ? "along" : "into")} frame {f}: {call}");
+                call.Agrees.Should().BeTrue($"{(along ? "along" : "into")} frame {f}: {call}");
+                (pos, cell) = (call.Engine.Position, call.Engine.CellId);
+            }
+        }
+    }
 }
