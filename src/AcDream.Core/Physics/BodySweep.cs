@@ -64,6 +64,7 @@ internal static class BodySweep
     {
         points[0] = p;
         path.Count = 1;
+        float graze = radius - sink - PhysicsConstants.ContactTolerance;
         Vector2 position = p, rest = d, previous = default;
         for (int contact = 0; contact <= PhysicsConstants.MaxBodyContacts; contact++)
         {
@@ -78,7 +79,7 @@ internal static class BodySweep
             {
                 float depth = 0f;
                 Vector2 outward = default;
-                walls.Sweep(position, rest, radius, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
+                walls.Sweep(position, rest, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
                 if (contact == 0 && depth > sink && depth < 4f * sink)
                 {
                     // Sunk into the skin by rounding: back out to the contact radius, unless that pushes
@@ -86,7 +87,7 @@ internal static class BodySweep
                     Vector2 pushed = position + (outward * depth);
                     float pushedT = 1f, pushedDepth = 0f;
                     Vector2 pushedNormal = default, pushedOutward = default;
-                    walls.Sweep(pushed, rest, radius, zLow, zHigh, ref pushedT, ref pushedNormal, ref pushedDepth, ref pushedOutward);
+                    walls.Sweep(pushed, rest, radius, graze, zLow, zHigh, ref pushedT, ref pushedNormal, ref pushedDepth, ref pushedOutward);
                     if (pushedDepth <= sink)
                     {
                         position = pushed;
@@ -132,34 +133,38 @@ internal static class BodySweep
     /// <summary>
     /// Earliest fraction <paramref name="t"/> (below the one given) of the move p → p + d at which a
     /// disc of <paramref name="radius"/> centred on the moving point touches the segment a–b, and the
-    /// unit normal from the segment to the centre there. A disc already touching (within
-    /// <see cref="PhysicsConstants.ContactTolerance"/>) and moving towards it is stopped at t = 0; one
-    /// moving away or along it (within <see cref="ParallelTolerance"/>) is free. A disc overlapping the
-    /// segment by more than <paramref name="depth"/> sets it to the overlap and <paramref name="outward"/>
-    /// to the normal there.
+    /// unit normal from the segment to the centre there. A disc already touching the segment beside its
+    /// ends (within <see cref="PhysicsConstants.ContactTolerance"/>) and moving towards it is stopped at
+    /// t = 0; one moving away or along it (within <see cref="ParallelTolerance"/>) is free. Else the
+    /// segment is met where the move reaches its contact radius beside it (the offset lines: a centre that
+    /// reaches that depth beyond an end, where it comes beside), or at an end, unless it only grazes that
+    /// (closer than <paramref name="graze"/>: see <see cref="SweepPoint"/>). A disc overlapping the segment
+    /// by more than <paramref name="depth"/> sets it to the overlap and <paramref name="outward"/> to the
+    /// normal there.
     /// </summary>
-    public static void SweepSegment(Vector2 p, Vector2 d, Vector2 a, Vector2 b, float radius, ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
+    public static void SweepSegment(Vector2 p, Vector2 d, Vector2 a, Vector2 b, float radius, float graze, ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
     {
         Vector2 ab = b - a;
         float lengthSquared = ab.LengthSquared();
         float u0 = lengthSquared > 0f ? Math.Clamp(Vector2.Dot(p - a, ab) / lengthSquared, 0f, 1f) : 0f;
         Vector2 away = p - (a + (ab * u0));
         float distanceSquared = away.LengthSquared();
-        float touch = radius + PhysicsConstants.ContactTolerance;
-        if (distanceSquared < touch * touch)
+        bool beside = distanceSquared == 0f || (u0 > 0f && u0 < 1f);
+        Vector2 n = distanceSquared == 0f ? OffsetNormal(ab, -d)
+            : beside ? OffsetNormal(ab, away)      // beside the segment: its own normal, the same at every point (and as the offset lines' below)
+            : away / MathF.Sqrt(distanceSquared);  // at an end: the circle's
+        if (distanceSquared < radius * radius && radius - MathF.Sqrt(distanceSquared) > depth)
         {
-            Vector2 n = distanceSquared == 0f ? OffsetNormal(ab, -d)
-                : u0 > 0f && u0 < 1f ? OffsetNormal(ab, away) // beside the segment: its own normal, the same at every point (and as the offset lines' below)
-                : away / MathF.Sqrt(distanceSquared);          // at an end: the circle's
+            (depth, outward) = (radius - MathF.Sqrt(distanceSquared), n);
+        }
+
+        float touch = radius + PhysicsConstants.ContactTolerance;
+        if (beside && distanceSquared < touch * touch)
+        {
             float into = Vector2.Dot(d, n);
             if (into < 0f && into * into > ParallelTolerance * ParallelTolerance * d.LengthSquared() && t > 0f)
             {
                 (t, normal) = (0f, n);
-            }
-
-            if (distanceSquared < radius * radius && radius - MathF.Sqrt(distanceSquared) > depth)
-            {
-                (depth, outward) = (radius - MathF.Sqrt(distanceSquared), n);
             }
 
             return;
@@ -167,34 +172,51 @@ internal static class BodySweep
 
         if (lengthSquared > 0f)
         {
-            Vector2 n = Vector2.Normalize(new Vector2(-ab.Y, ab.X));
-            float s0 = Vector2.Dot(p - a, n);
+            Vector2 side = Vector2.Normalize(new Vector2(-ab.Y, ab.X));
+            float s0 = Vector2.Dot(p - a, side);
             if (s0 < 0f)
             {
-                (n, s0) = (-n, -s0);
+                (side, s0) = (-side, -s0);
             }
 
-            float approach = -Vector2.Dot(d, n);
-            if (approach > 0f && s0 >= radius)
+            float approach = -Vector2.Dot(d, side);
+            if (approach > 0f)
             {
-                float hit = (s0 - radius) / approach;
-                if (hit < t)
+                // Met at the contact radius; a centre already nearer the line (beyond the segment's end) at
+                // the sink's depth, or where it is. One that gets that near beyond an end and then comes
+                // beside the segment having only grazed the end (see SweepPoint) is met where it comes beside.
+                float line = s0 >= radius ? radius : MathF.Min(s0, graze + PhysicsConstants.ContactTolerance);
+                float hit = (s0 - line) / approach;
+                float ua = Vector2.Dot(p - a, ab) / lengthSquared, du = Vector2.Dot(d, ab) / lengthSquared;
+                float u = ua + (du * hit);
+                if ((u < 0f && du > 0f) || (u > 1f && du < 0f))
                 {
-                    float u = Vector2.Dot(p + (d * hit) - a, ab) / lengthSquared;
-                    if (u >= 0f && u <= 1f)
-                    {
-                        (t, normal) = (hit, n);
-                    }
+                    float enter = u < 0f ? -ua / du : (1f - ua) / du;
+                    (hit, u) = s0 - (approach * enter) >= graze ? (enter, u < 0f ? 0f : 1f) : (1f, u);
+                }
+
+                if (hit < t && u >= 0f && u <= 1f)
+                {
+                    (t, normal) = (hit, side);
                 }
             }
         }
 
-        SweepPoint(p, d, a, radius, ref t, ref normal);
-        SweepPoint(p, d, b, radius, ref t, ref normal);
+        SweepPoint(p, d, a, radius, graze, ref t, ref normal);
+        SweepPoint(p, d, b, radius, graze, ref t, ref normal);
     }
 
-    /// <summary>As <see cref="SweepSegment"/> for a single point (a segment's end): a ray against a circle.</summary>
-    private static void SweepPoint(Vector2 p, Vector2 d, Vector2 c, float radius, ref float t, ref Vector2 normal)
+    /// <summary>
+    /// As <see cref="SweepSegment"/> for a single point (a segment's end): a ray against a circle. A move
+    /// that comes no closer than <paramref name="graze"/> to the point only grazes it: a body sliding along
+    /// a wall sits up to the sink the slide allows inside its contact radius (the float rounding), and
+    /// taking the wall's end (or a collinear neighbour's) for a contact there turned the slide by the
+    /// square root of that hair (3 mrad for 2e-6 m), so the body left the wall's line and met what the
+    /// exact slide misses; if it goes on towards the wall, the offset line meets it where it comes beside.
+    /// A body already sunk into the circle by no more than the sink meets it at the sink's depth; deeper,
+    /// where it is, when moving more than <see cref="PhysicsConstants.ContactTolerance"/> deeper.
+    /// </summary>
+    private static void SweepPoint(Vector2 p, Vector2 d, Vector2 c, float radius, float graze, ref float t, ref Vector2 normal)
     {
         Vector2 m = p - c;
         float b = Vector2.Dot(m, d);
@@ -204,7 +226,21 @@ internal static class BodySweep
         }
 
         float a = d.LengthSquared();
-        float cc = m.LengthSquared() - (radius * radius);
+        float mm = m.LengthSquared();
+        float circle = radius, limit = graze;
+        if (mm < radius * radius)
+        {
+            circle = MathF.Min(MathF.Sqrt(mm), graze + PhysicsConstants.ContactTolerance);
+            limit = circle - PhysicsConstants.ContactTolerance;
+        }
+
+        float deepest = (m + (d * MathF.Min(-b / a, 1f))).LengthSquared(); // the closest the move comes, squared
+        if (limit > 0f && deepest >= limit * limit)
+        {
+            return; // a graze
+        }
+
+        float cc = mm - (circle * circle);
         float discriminant = (b * b) - (a * cc);
         if (discriminant < 0f)
         {
@@ -241,7 +277,7 @@ internal static class BodySweep
     /// frame), cut to the band first: the part of the polygon between the two heights, seen from above.
     /// </summary>
     public static void SweepPolygon(
-        ReadOnlySpan<Vector3> vertices, Vector2 offset, Vector2 p, Vector2 d, float radius, float zLow, float zHigh,
+        ReadOnlySpan<Vector3> vertices, Vector2 offset, Vector2 p, Vector2 d, float radius, float graze, float zLow, float zHigh,
         ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
     {
         Span<Vector3> low = stackalloc Vector3[2 * vertices.Length]; // a cut adds at most one vertex per edge
@@ -257,7 +293,7 @@ internal static class BodySweep
         {
             var a = new Vector2(band[j].X + offset.X, band[j].Y + offset.Y);
             var b = new Vector2(band[i].X + offset.X, band[i].Y + offset.Y);
-            SweepSegment(p, d, a, b, radius, ref t, ref normal, ref depth, ref outward);
+            SweepSegment(p, d, a, b, radius, graze, ref t, ref normal, ref depth, ref outward);
         }
     }
 

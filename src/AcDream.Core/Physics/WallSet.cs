@@ -99,11 +99,12 @@ internal ref struct WallSet
 
     /// <summary>
     /// Sweeps the body (contact radius <paramref name="radius"/>) from <paramref name="p"/> along
-    /// <paramref name="d"/> against every gathered wall in the band: the earliest contact below
+    /// <paramref name="d"/> against every gathered wall in the band (a wall's end counts only if the move
+    /// comes closer than <paramref name="graze"/> to it): the earliest contact below
     /// <paramref name="t"/>, with its normal; and the deepest overlap at <paramref name="p"/> beyond
     /// <paramref name="depth"/>, with the normal out of it.
     /// </summary>
-    public readonly void Sweep(Vector2 p, Vector2 d, float radius, float zLow, float zHigh, ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
+    public readonly void Sweep(Vector2 p, Vector2 d, float radius, float graze, float zLow, float zHigh, ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
     {
         for (int i = 0; i < _count; i++)
         {
@@ -115,7 +116,7 @@ internal ref struct WallSet
             {
                 if (wall.ZMax > zLow && wall.ZMin < zHigh && Overlaps(wall.Min, wall.Max, offset))
                 {
-                    BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
+                    BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
                 }
             }
         }

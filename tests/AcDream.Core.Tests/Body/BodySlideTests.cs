@@ -104,6 +104,83 @@ public class BodySlideTests
     }
 
     [Theory]
+    [InlineData(0f, 0xA9, false)]
+    [InlineData(41f, 0xA9, false)]
+    [InlineData(41f, 0xFE, true)]
+    public void Resolve_PassingAThinWallsEnd_RoundsItAtTheRadiusAsTheReference(float yaw, int lb, bool global)
+    {
+        // A free-standing wall of zero thickness (cell-local x = 5, y 2..6). Movers walk north past its top end
+        // at offsets of 0.1..0.45 m from its line (nearer than the radius), and diagonally at it: each frame
+        // agrees with the reference, the body keeps its radius from the wall, and it gets past the end.
+        var random = new Random(lb + (int)yaw);
+        (BodyCourse course, Quaternion q, Vector3 cellOrigin) = SquareRoom(10, yaw, lb, lb, global, b => b.Physics(BodyCourses.Wall(5, 2, 5, 6, 0, BodyCourses.WallHeight)));
+        uint cell = course.Areas[0].Cell;
+        int rounded = 0;
+        for (int run = 0; run < 16; run++)
+        {
+            float offset = BodyCourses.Range(random, 0.1f, 0.45f) * (run % 2 == 0 ? 1 : -1);
+            Vector3 pos = World(course, q, cellOrigin, 5 + offset - (run % 4 < 2 ? 0 : 1.5f * MathF.Sign(offset)), 1);
+            float speed = BodyCourses.Range(random, 0.05f, 0.6f);
+            Vector3 delta = Vector3.Transform(Vector3.Normalize(new Vector3(run % 4 < 2 ? 0 : 1.5f * MathF.Sign(-offset), 5, 0)), q) * speed;
+            for (int f = 0; f < (int)(7 / speed); f++)
+            {
+                BodyCall call = BodyCheck.Compare(course, pos, cell, delta, Step, WithPlayerBody);
+                call.Agrees.Should().BeTrue($"run {run}, frame {f}: {call}");
+                call.Overlap.Should().BeLessThanOrEqualTo(0, $"run {run}, frame {f}: {call}");
+                call.Tunnelled.Should().BeFalse($"run {run}, frame {f}: {call}");
+                rounded += call.Engine.Outcome == ResolveOutcome.Slid && call.Reference.Contacts > 0 ? 1 : 0;
+                pos = call.Engine.Position;
+            }
+
+            Vector3 local = Vector3.Transform(pos - course.Origin - cellOrigin, Quaternion.Conjugate(q));
+            local.Y.Should().BeGreaterThan(6.2f, $"{course.Name}, run {run}: got past the wall's end (at {local})");
+        }
+
+        rounded.Should().BeGreaterThan(16, "the movers touched the wall's end and went round it");
+    }
+
+    [Theory]
+    [InlineData(0f, 0xA9, false)]
+    [InlineData(17f, 0xA9, false)]
+    [InlineData(71f, 0x12, false)]
+    [InlineData(17f, 0xFE, true)]
+    [InlineData(71f, 0xFE, true)]
+    public void Resolve_AlongAWallOfCollinearPieces_StaysOnItsLineAsTheReference(float yaw, int lb, bool global)
+    {
+        // The east wall of a 40 m room is forty 1 m polygons end to end (as real cells' walls are cut at
+        // their doors and windows). Pushing along it at 63° and walking exactly along it, at 0.2, 0.7 and
+        // 1.9 m per frame, every frame agrees with the reference; pushed, the body stays on the wall's line.
+        foreach (float speed in new[] { 0.2f, 0.7f, 1.9f })
+        {
+            foreach (bool along in new[] { false, true })
+            {
+                (BodyCourse course, Quaternion q, Vector3 cellOrigin) = SquareRoom(40, yaw, lb, lb, global, b =>
+                {
+                    for (int i = 0; i < 40; i++)
+                    {
+                        b.Physics(BodyCourses.Wall(39.9f, i, 39.9f, i + 1, 0, BodyCourses.WallHeight));
+                    }
+                });
+                Vector3 pos = World(course, q, cellOrigin, along ? 39.9f - 0.4801f : 38, 1.5f);
+                uint cell = course.Areas[0].Cell;
+                Vector3 delta = Vector3.Transform(Vector3.Normalize(along ? new Vector3(0, 1, 0) : new Vector3(1, 2, 0)), q) * speed;
+                for (int f = 0; f < (int)(35 / speed); f++)
+                {
+                    BodyCall call = BodyCheck.Compare(course, pos, cell, delta, Step, WithPlayerBody);
+                    call.Agrees.Should().BeTrue($"{speed} m per frame{(along ? " along" : "")}, frame {f}: {call}");
+                    call.Overlap.Should().BeLessThanOrEqualTo(0, $"{speed} m per frame{(along ? " along" : "")}, frame {f}: {call}");
+                    pos = call.Engine.Position;
+                    Vector3 local = Vector3.Transform(pos - course.Origin - cellOrigin, Quaternion.Conjugate(q));
+                    if (call.Engine.Outcome == ResolveOutcome.Slid && !along)
+                    {
+                        (39.9f - local.X).Should().BeInRange(0.48f, 0.48f + 1e-4f + (2 * (float)BodyCheck.Skin(course, pos, delta, 0.48f)) + (4 * (float)BodyCheck.Spacing(pos, delta)), $"{speed} m per frame{(along ? " along" : "")}, frame {f}: on the wall's line, at {local}");
+                    }
+                }
+            }
+        }
+    }
+
+    [Theory]
     [InlineData(17f)]
     [InlineData(52f)]
     [InlineData(128f)]
