@@ -65,7 +65,8 @@ internal static class BodySweep
         points[0] = p;
         path.Count = 1;
         float graze = radius - sink - PhysicsConstants.ContactTolerance;
-        Vector2 position = p, rest = d, previous = default;
+        float together = MathF.Max(PhysicsConstants.ContactTolerance, 2f * sink);
+        Vector2 position = p, rest = d, previous = default, unprojected = d;
         for (int contact = 0; contact <= PhysicsConstants.MaxBodyContacts; contact++)
         {
             if (rest == Vector2.Zero)
@@ -111,6 +112,7 @@ internal static class BodySweep
                 break;
             }
 
+            float travelled = t * rest.Length();
             if (t > 0f)
             {
                 position += rest * t;
@@ -120,15 +122,49 @@ internal static class BodySweep
             path.Contacts++;
             path.Normal = normal;
             rest *= 1f - t;
-            rest -= Vector2.Dot(rest, normal) * normal; // along the wall: never longer than before
-            if (contact > 0 && Vector2.Dot(rest, previous) < -ConcaveTolerance * rest.Length())
+            if (contact > 0 && travelled < together)
             {
-                break; // into the wall touched before: a concave corner stops the body
+                // Met together with the wall before (within the contact tolerance, or the skin, whose
+                // rounding decides the order of contacts that close): the slide along this wall alone is
+                // the one that can clear the other (projected in turn, the slide went along the wrong
+                // wall, 9 cm astray beside a door jamb); if it does not, the body is wedged.
+                unprojected *= 1f - t;
+                Vector2 alone = Along(unprojected, normal);
+                if (Vector2.Dot(alone, previous) < -ConcaveTolerance * alone.Length())
+                {
+                    break;
+                }
+
+                rest = alone;
+            }
+            else
+            {
+                unprojected = rest;
+                rest = Along(rest, normal);
+                if (contact > 0 && Blocked(rest, previous, d))
+                {
+                    break;
+                }
             }
 
             previous = normal;
         }
     }
+
+    /// <summary><paramref name="v"/> along a wall of unit normal <paramref name="n"/>: never longer than before.</summary>
+    private static Vector2 Along(Vector2 v, Vector2 n)
+    {
+        v -= Vector2.Dot(v, n) * n;
+        return v - (Vector2.Dot(v, n) * n); // again: what the first leaves is float residue of the longer vector, which can be large beside a short slide
+    }
+
+    /// <summary>
+    /// Whether a slide stops: it points into the wall touched before (a concave corner), or back against
+    /// the move <paramref name="d"/> (wedged between two walls, whose projections in turn send it back).
+    /// </summary>
+    private static bool Blocked(Vector2 slide, Vector2 previous, Vector2 d) =>
+        Vector2.Dot(slide, previous) < -ConcaveTolerance * slide.Length()
+        || Vector2.Dot(slide, d) < ConcaveTolerance * slide.Length() * d.Length();
 
     /// <summary>
     /// Earliest fraction <paramref name="t"/> (below the one given) of the move p → p + d at which a

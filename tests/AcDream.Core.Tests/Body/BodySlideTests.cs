@@ -181,6 +181,56 @@ public class BodySlideTests
     }
 
     [Theory]
+    [InlineData(0f, 0xA9, false)]
+    [InlineData(33f, 0xA9, false)]
+    [InlineData(200.3f, 0x77, false)]
+    [InlineData(33f, 0xFE, true)]
+    public void Resolve_WedgedBetweenAWallAndADoorJamb_NeverSlidesAgainstTheMoveAndAgreesWithTheReference(float yaw, int lb, bool global)
+    {
+        // Room A (6 × 5) has a doorway into room B in its east wall from y 0.15 to 1.15: a 0.15 m stub of
+        // the east wall stands between the south wall and the door's jamb. A body pushed into that nook
+        // comes to rest touching the south wall and the stub's end; pushed on at every angle from there,
+        // it never moves against the push (two walls met together are resolved as one) and agrees with the
+        // reference.
+        Quaternion q = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, yaw * MathF.PI / 180);
+        var cellOrigin = new Vector3(90, 90, 50);
+        uint prefix = ((uint)lb << 24) | ((uint)lb << 16);
+        var roomA = new CellBuilder(prefix | 0x0100u, cellOrigin, q);
+        var roomB = new CellBuilder(prefix | 0x0101u, cellOrigin, q);
+        BodyCourses.Box(roomA, 0, 0, 6, 5, east: (0.15f, 1.15f, 2.3f, 0x0101));
+        BodyCourses.Box(roomB, 6, 0, 9, 5, west: (0.15f, 1.15f, 2.3f, 0x0100));
+        BodyCourse course = BodyCourses.Create(
+            FormattableString.Invariant($"door beside a corner, yaw {yaw}°"), lb, lb, global, 50f, [roomA, roomB],
+            [(roomA.CellId, roomA.EnvCell.Position, Vector2.Zero, new Vector2(6, 5))]);
+        Vector3 pos = World(course, q, cellOrigin, 4.5f, 1f);
+        uint cell = roomA.CellId;
+        Vector3 into = Vector3.Transform(Vector3.Normalize(new Vector3(1, -0.6f, 0)), q) * 0.3f;
+        for (int f = 0; f < 40; f++)
+        {
+            ResolveResult r = course.Engine.Resolve(pos, cell, into, Step, WithPlayerBody);
+            (pos, cell) = (r.Position, r.CellId);
+        }
+
+        Vector3 nook = pos;
+        int stopped = 0, slid = 0;
+        for (int a = 0; a < 72; a++)
+        {
+            float angle = a * MathF.PI / 36;
+            Vector3 delta = Vector3.Transform(new Vector3(MathF.Cos(angle), MathF.Sin(angle), 0), q) * 0.4f;
+            BodyCall call = BodyCheck.Compare(course, nook, cell, delta, Step, WithPlayerBody);
+            call.Agrees.Should().BeTrue($"pushed at {a * 5}° from the nook: {call}");
+            call.Overlap.Should().BeLessThanOrEqualTo(0, $"pushed at {a * 5}° from the nook: {call}");
+            Vector3 moved = call.Engine.Position - nook;
+            Vector3.Dot(moved, delta).Should().BeGreaterThanOrEqualTo(-1e-6f, $"pushed at {a * 5}°, never against the push: {call}");
+            stopped += moved == Vector3.Zero ? 1 : 0;
+            slid += call.Engine.Outcome == ResolveOutcome.Slid ? 1 : 0;
+        }
+
+        stopped.Should().BeGreaterThan(0, "pushed straight into the nook, the body stays");
+        slid.Should().BeGreaterThan(0, "pushed along either wall, it slides");
+    }
+
+    [Theory]
     [InlineData(17f)]
     [InlineData(52f)]
     [InlineData(128f)]
