@@ -348,7 +348,15 @@ public sealed class PhysicsEngine
             (result, at, cell) = (next, next.Position, next.CellId);
         }
 
-        return result.Outcome == ResolveOutcome.Moved ? result with { Outcome = ResolveOutcome.Slid, SurfaceNormal = wall } : result;
+        if (result.Outcome != ResolveOutcome.Moved)
+        {
+            return result;
+        }
+
+        // A path whose corners the world frame rounds back onto the start (a body at rest against a corner,
+        // far from the origin) did not slide: it is stopped.
+        bool stayed = result.Position.X == pos.X && result.Position.Y == pos.Y;
+        return result with { Outcome = stayed ? ResolveOutcome.Wall : ResolveOutcome.Slid, SurfaceNormal = wall };
     }
 
     /// <summary>

@@ -103,6 +103,45 @@ public class BodySlideTests
         }
     }
 
+    public static TheoryData<float, int, bool> Corners() => new()
+    {
+        { 0f, 0xA9, false }, { 27f, 0xA9, false }, { 63.5f, 0x12, false }, { 180f, 0xA9, false },
+        { 27f, 0xFE, true }, { 110f, 0xFE, true }, { 0f, 0xA9, true },
+    };
+
+    [Theory]
+    [MemberData(nameof(Corners))]
+    public void Resolve_PushingIntoAConcaveCorner_ComesToRestAndStaysBitForBit(float yaw, int lb, bool global)
+    {
+        // A 10 m room; movers from random places within 2 m of its north-east corner push at it, at
+        // 0.05..2 m per frame in directions up to 30° either side of the corner's bisector: after coming to
+        // rest they return the same position bit for bit frame after frame, the radius (and skin) from both walls.
+        var random = new Random((int)yaw + lb);
+        (BodyCourse course, Quaternion q, Vector3 cellOrigin) = SquareRoom(10, yaw, lb, lb, global);
+        uint cell = course.Areas[0].Cell;
+        for (int run = 0; run < 12; run++)
+        {
+            Vector3 pos = World(course, q, cellOrigin, BodyCourses.Range(random, 8, 9.4f), BodyCourses.Range(random, 8, 9.4f));
+            float angle = (MathF.PI / 4) + BodyCourses.Range(random, -0.52f, 0.52f), length = BodyCourses.Range(random, 0.05f, 2f);
+            Vector3 delta = Vector3.Transform(new Vector3(MathF.Cos(angle), MathF.Sin(angle), 0), q) * length;
+            var seen = new List<ResolveResult>();
+            for (int f = 0; f < 40 + (int)(8 / length); f++)
+            {
+                ResolveResult r = course.Engine.Resolve(pos, cell, delta, Step, WithPlayerBody);
+                seen.Add(r);
+                pos = r.Position;
+            }
+
+            string what = FormattableString.Invariant($"{course.Name}, run {run}: pushing by {delta:R}");
+            List<ResolveResult> last = seen.TakeLast(40).ToList();
+            last.Select(r => r.Position).Distinct().Should().HaveCount(1, $"{what}: at rest, bit for bit: {string.Join(", ", last.Select(r => r.Position.ToString("R", null)).Distinct())}");
+            last.Should().OnlyContain(r => r.Outcome == ResolveOutcome.Wall && r.CellId == cell, $"{what}: {last[0]}");
+            Vector3 local = Vector3.Transform(last[0].Position - course.Origin - cellOrigin, Quaternion.Conjugate(q));
+            (10f - local.X).Should().BeInRange(0.48f - 1e-4f, 0.48f + 0.01f, $"{what}: from the east wall, at {local}");
+            (10f - local.Y).Should().BeInRange(0.48f - 1e-4f, 0.48f + 0.01f, $"{what}: from the north wall, at {local}");
+        }
+    }
+
     [Theory]
     [InlineData(0f, 0xA9, false)]
     [InlineData(41f, 0xA9, false)]
