@@ -13,13 +13,12 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
     /// <summary>
     /// The path of a body of <paramref name="body"/> with its feet at <paramref name="position"/>
     /// (world) in <paramref name="cellId"/> moving by <paramref name="delta"/>; the path's points (in <paramref name="points"/>) are
-    /// landblock-local, in the mover's landblock (its cell's indoors). False when the
+    /// landblock-local in landblock (<paramref name="lbX"/>, <paramref name="lbY"/>). False when the
     /// mover's landblock is not loaded (no walls are known: the point move decides).
     /// </summary>
     [SkipLocalsInit] // the stack buffers are written before they are read
-    public bool Plan(Vector3 position, uint cellId, Vector2 delta, float stepUp, MoverBody body, Span<Vector2> points, ref BodySweep.Path path)
+    public bool Plan(Vector3 position, uint cellId, Vector2 delta, float stepUp, MoverBody body, Span<Vector2> points, ref BodySweep.Path path, out int lbX, out int lbY)
     {
-        int lbX, lbY;
         Vector2 local;
         if (CellIds.IsIndoor(cellId))
         {
@@ -37,7 +36,8 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
             return false;
         }
 
-        float radius = body.Radius + Skin(lbX, lbY, local, delta.Length() + body.Radius);
+        float skin = Skin(lbX, lbY, local, delta.Length() + body.Radius);
+        float radius = body.Radius + skin;
         float reach = delta.Length() + radius + PhysicsConstants.ContactTolerance;
         if (!CellIds.IsIndoor(cellId) && !AnyWallNear(entry, local, reach) && !NearSeam(local, reach))
         {
@@ -58,21 +58,20 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
             GatherAcrossSeams(ref walls, lbX, lbY);
         }
 
-        BodySweep.Slide(in walls, local, delta, radius, position.Z + stepUp, position.Z + body.Height, points, ref path);
+        BodySweep.Slide(in walls, local, delta, radius, 0.5f * skin, position.Z + stepUp, position.Z + body.Height, points, ref path);
         return true;
     }
 
     /// <summary>
     /// The gap the body keeps from walls beyond its radius: <see cref="PhysicsConstants.BodySkin"/>
-    /// plus the float spacing of the coordinates it may reach, in the world frame and the landblock's.
-    /// Rounding the answer to the world frame moves it by at most half that spacing on each axis
-    /// (0.71 of it in all), so it never puts the body into a wall.
+    /// plus twice the float spacing of the coordinates it may reach, in the world frame and the
+    /// landblock's, so rounding the answer to the world frame never puts the body into a wall.
     /// </summary>
     private float Skin(int lbX, int lbY, Vector2 local, float reach)
     {
         Vector2 world = frame.Origin(lbX, lbY) + local;
         float largest = MathF.Max(MathF.Max(MathF.Abs(world.X), MathF.Abs(world.Y)), MathF.Max(MathF.Abs(local.X), MathF.Abs(local.Y))) + reach;
-        return PhysicsConstants.BodySkin + (MathF.BitIncrement(largest) - largest);
+        return PhysicsConstants.BodySkin + (2f * (MathF.BitIncrement(largest) - largest));
     }
 
     /// <summary>Outdoors: whether any cell's walls over the outdoor squares the box (<paramref name="centre"/> ± <paramref name="reach"/>) covers overlap it.</summary>

@@ -17,20 +17,18 @@ namespace AcDream.Core.Physics;
 internal static class BodySweep
 {
     /// <summary>
-    /// A move into a touched wall by less than this fraction of its length counts as along it. A
-    /// projection onto a wall leaves a residue of float rounding (about 1e-7 of the move) that would
-    /// otherwise read as a new contact with the same wall; the drift it allows is 1e-6 of the distance
-    /// walked at that grazing angle (0.3 mm over 300 m).
+    /// A move that approaches a wall it touches by less than this fraction of its length moves along
+    /// it, not into it: what a slide's projection onto the wall leaves is float residue of either sign,
+    /// and taking it for a new contact stopped a body sliding along one wall as if in a corner.
     /// </summary>
-    private const float Glancing = 1e-6f;
+    private const float ParallelTolerance = 1e-5f;
 
     /// <summary>
-    /// Metres: a leg of a slide shorter than this is not taken. Far below the world's float spacing
-    /// anywhere (15 µm at a landblock's far edge), so such a leg would not move the answer at all, and
-    /// a body pushing head-on into a wall at a heading with a rounding-sized sideways part is stopped
-    /// (<see cref="ResolveOutcome.Wall"/>), not reported as sliding in place.
+    /// A slide that points into the wall touched before by more than this fraction of its length is in
+    /// a concave corner; less is the same wall touched again (a wall's end, whose normal the float
+    /// rounding of the position turns by ~1e-5 rad between two touches).
     /// </summary>
-    private const float MinLeg = 1e-6f;
+    private const float ConcaveTolerance = 1e-3f;
 
     /// <summary>What a body's path holds besides its corner points: how many corners, and what it touched.</summary>
     public struct Path
@@ -50,12 +48,26 @@ internal static class BodySweep
     /// <paramref name="d"/> among the walls of <paramref name="walls"/> in the band
     /// [<paramref name="zLow"/>, <paramref name="zHigh"/>], writing the path's corners to
     /// <paramref name="points"/> (landblock-local; room for <see cref="PhysicsConstants.MaxBodyContacts"/> + 2).
+    /// A body that starts closer to a wall than the contact radius by more than <paramref name="sink"/>
+    /// (and less than four times it) is first put back at the contact radius.
     /// </summary>
-    public static void Slide(in WallSet walls, Vector2 p, Vector2 d, float radius, float zLow, float zHigh, Span<Vector2> points, ref Path path)
+    /// <remarks>
+    /// Why the push back: every answer is rounded to the world frame, and a body moving along a wall
+    /// with the same delta frame after frame is rounded the same way each time, so without it the body
+    /// sank into the wall by up to half a float spacing per frame (1 mm after 350 frames in a centred
+    /// frame, its whole radius after 470 at the far corner of the global one). <paramref name="sink"/> is
+    /// half the skin the contact radius keeps beyond the body's: what one call's rounding may take stays
+    /// inside the skin, and a body at rest in a corner (sunk by less) is not moved, so it stays bit for
+    /// bit. Deeper overlaps are not this rounding (a body placed in a wall by its caller) and are left
+    /// alone; so is a push back into another wall (a narrow wedge).
+    /// </remarks>
+    public static void Slide(in WallSet walls, Vector2 p, Vector2 d, float radius, float sink, float zLow, float zHigh, Span<Vector2> points, ref Path path)
     {
         points[0] = p;
         path.Count = 1;
-        Vector2 position = p, rest = d, previous = default;
+        float graze = radius - sink - PhysicsConstants.ContactTolerance;
+        float together = MathF.Max(PhysicsConstants.ContactTolerance, 2f * sink);
+        Vector2 position = p, rest = d, previous = default, unprojected = d;
         for (int contact = 0; contact <= PhysicsConstants.MaxBodyContacts; contact++)
         {
             if (rest == Vector2.Zero)
@@ -67,7 +79,26 @@ internal static class BodySweep
             Vector2 normal = default;
             if (contact < PhysicsConstants.MaxBodyContacts)
             {
-                walls.Sweep(position, rest, radius, zLow, zHigh, ref t, ref normal);
+                float depth = 0f;
+                Vector2 outward = default;
+                walls.Sweep(position, rest, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
+                if (contact == 0 && depth > sink && depth < 4f * sink)
+                {
+                    // Sunk into the skin by rounding: back out to the contact radius, unless that pushes
+                    // the body into another wall.
+                    Vector2 pushed = position + (outward * depth);
+                    float pushedT = 1f, pushedDepth = 0f;
+                    Vector2 pushedNormal = default, pushedOutward = default;
+                    walls.Sweep(pushed, rest, radius, graze, zLow, zHigh, ref pushedT, ref pushedNormal, ref pushedDepth, ref pushedOutward);
+                    if (pushedDepth <= sink)
+                    {
+                        position = pushed;
+                        points[path.Count++] = position;
+                        path.Contacts++;
+                        path.Normal = outward;
+                        (t, normal) = (pushedT, pushedNormal);
+                    }
+                }
             }
             else
             {
@@ -77,16 +108,13 @@ internal static class BodySweep
 
             if (t >= 1f)
             {
-                if (rest.LengthSquared() >= MinLeg * MinLeg || contact == 0)
-                {
-                    position += rest;
-                    points[path.Count++] = position;
-                }
-
+                position += rest;
+                points[path.Count++] = position;
                 break;
             }
 
-            if (t > 0f && (rest * t).LengthSquared() >= MinLeg * MinLeg)
+            float travelled = t * rest.Length();
+            if (t > 0f)
             {
                 position += rest * t;
                 points[path.Count++] = position;
@@ -95,35 +123,83 @@ internal static class BodySweep
             path.Contacts++;
             path.Normal = normal;
             rest *= 1f - t;
-            rest -= Vector2.Dot(rest, normal) * normal; // along the wall: never longer than before
-            if (contact > 0 && Vector2.Dot(rest, previous) < -Glancing * rest.Length())
+            if (contact > 0 && travelled < together)
             {
-                break; // into the wall touched before: a concave corner stops the body
+                // Met together with the wall before (within the contact tolerance, or the skin, whose
+                // rounding decides the order of contacts that close): the slide along this wall alone is
+                // the one that can clear the other (projected in turn, the slide went along the wrong
+                // wall, 9 cm astray beside a door jamb); if it does not, the body is wedged.
+                unprojected *= 1f - t;
+                Vector2 alone = Along(unprojected, normal);
+                if (Vector2.Dot(alone, previous) < -ConcaveTolerance * alone.Length())
+                {
+                    break;
+                }
+
+                rest = alone;
+            }
+            else
+            {
+                unprojected = rest;
+                rest = Along(rest, normal);
+                if (contact > 0 && Blocked(rest, previous, d))
+                {
+                    break;
+                }
             }
 
             previous = normal;
         }
     }
 
+    /// <summary><paramref name="v"/> along a wall of unit normal <paramref name="n"/>: never longer than before.</summary>
+    private static Vector2 Along(Vector2 v, Vector2 n)
+    {
+        v -= Vector2.Dot(v, n) * n;
+        return v - (Vector2.Dot(v, n) * n); // again: what the first leaves is float residue of the longer vector, which can be large beside a short slide
+    }
+
+    /// <summary>
+    /// Whether a slide stops: it points into the wall touched before (a concave corner), or back against
+    /// the move <paramref name="d"/> (wedged between two walls, whose projections in turn send it back).
+    /// </summary>
+    private static bool Blocked(Vector2 slide, Vector2 previous, Vector2 d) =>
+        Vector2.Dot(slide, previous) < -ConcaveTolerance * slide.Length()
+        || Vector2.Dot(slide, d) < ConcaveTolerance * slide.Length() * d.Length();
+
     /// <summary>
     /// Earliest fraction <paramref name="t"/> (below the one given) of the move p → p + d at which a
     /// disc of <paramref name="radius"/> centred on the moving point touches the segment a–b, and the
-    /// unit normal from the segment to the centre there. A disc already touching (within
-    /// <see cref="PhysicsConstants.ContactTolerance"/>) and moving towards it is stopped at t = 0; one
-    /// moving away or along it is free.
+    /// unit normal from the segment to the centre there. A disc already touching the segment beside its
+    /// ends (within <see cref="PhysicsConstants.ContactTolerance"/>) and moving towards it is stopped at
+    /// t = 0; one moving away or along it (within <see cref="ParallelTolerance"/>) is free. Else the
+    /// segment is met where the move reaches its contact radius beside it (the offset lines: a centre that
+    /// reaches that depth beyond an end, where it comes beside), or at an end, unless it only grazes that
+    /// (closer than <paramref name="graze"/>: see <see cref="SweepPoint"/>). A disc overlapping the segment
+    /// by more than <paramref name="depth"/> sets it to the overlap and <paramref name="outward"/> to the
+    /// normal there.
     /// </summary>
-    public static void SweepSegment(Vector2 p, Vector2 d, Vector2 a, Vector2 b, float radius, ref float t, ref Vector2 normal)
+    public static void SweepSegment(Vector2 p, Vector2 d, Vector2 a, Vector2 b, float radius, float graze, ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
     {
         Vector2 ab = b - a;
         float lengthSquared = ab.LengthSquared();
         float u0 = lengthSquared > 0f ? Math.Clamp(Vector2.Dot(p - a, ab) / lengthSquared, 0f, 1f) : 0f;
         Vector2 away = p - (a + (ab * u0));
         float distanceSquared = away.LengthSquared();
-        float touch = radius + PhysicsConstants.ContactTolerance;
-        if (distanceSquared < touch * touch)
+        bool beside = distanceSquared == 0f || (u0 > 0f && u0 < 1f);
+        Vector2 n = distanceSquared == 0f ? OffsetNormal(ab, -d)
+            : beside ? OffsetNormal(ab, away)      // beside the segment: its own normal, the same at every point (and as the offset lines' below)
+            : away / MathF.Sqrt(distanceSquared);  // at an end: the circle's
+        if (distanceSquared < radius * radius && radius - MathF.Sqrt(distanceSquared) > depth)
         {
-            Vector2 n = distanceSquared > 0f ? away / MathF.Sqrt(distanceSquared) : OffsetNormal(ab, -d);
-            if (Vector2.Dot(d, n) < -Glancing * d.Length() && t > 0f)
+            (depth, outward) = (radius - MathF.Sqrt(distanceSquared), n);
+        }
+
+        float touch = radius + PhysicsConstants.ContactTolerance;
+        if (beside && distanceSquared < touch * touch)
+        {
+            float into = Vector2.Dot(d, n);
+            if (into < 0f && into * into > ParallelTolerance * ParallelTolerance * d.LengthSquared() && t > 0f)
             {
                 (t, normal) = (0f, n);
             }
@@ -133,34 +209,51 @@ internal static class BodySweep
 
         if (lengthSquared > 0f)
         {
-            Vector2 n = Vector2.Normalize(new Vector2(-ab.Y, ab.X));
-            float s0 = Vector2.Dot(p - a, n);
+            Vector2 side = Vector2.Normalize(new Vector2(-ab.Y, ab.X));
+            float s0 = Vector2.Dot(p - a, side);
             if (s0 < 0f)
             {
-                (n, s0) = (-n, -s0);
+                (side, s0) = (-side, -s0);
             }
 
-            float approach = -Vector2.Dot(d, n);
-            if (approach > 0f && s0 >= radius)
+            float approach = -Vector2.Dot(d, side);
+            if (approach > 0f)
             {
-                float hit = (s0 - radius) / approach;
-                if (hit < t)
+                // Met at the contact radius; a centre already nearer the line (beyond the segment's end) at
+                // the sink's depth, or where it is. One that gets that near beyond an end and then comes
+                // beside the segment having only grazed the end (see SweepPoint) is met where it comes beside.
+                float line = s0 >= radius ? radius : MathF.Min(s0, graze + PhysicsConstants.ContactTolerance);
+                float hit = (s0 - line) / approach;
+                float ua = Vector2.Dot(p - a, ab) / lengthSquared, du = Vector2.Dot(d, ab) / lengthSquared;
+                float u = ua + (du * hit);
+                if ((u < 0f && du > 0f) || (u > 1f && du < 0f))
                 {
-                    float u = Vector2.Dot(p + (d * hit) - a, ab) / lengthSquared;
-                    if (u >= 0f && u <= 1f)
-                    {
-                        (t, normal) = (hit, n);
-                    }
+                    float enter = u < 0f ? -ua / du : (1f - ua) / du;
+                    (hit, u) = s0 - (approach * enter) >= graze ? (enter, u < 0f ? 0f : 1f) : (1f, u);
+                }
+
+                if (hit < t && u >= 0f && u <= 1f)
+                {
+                    (t, normal) = (hit, side);
                 }
             }
         }
 
-        SweepPoint(p, d, a, radius, ref t, ref normal);
-        SweepPoint(p, d, b, radius, ref t, ref normal);
+        SweepPoint(p, d, a, radius, graze, ref t, ref normal);
+        SweepPoint(p, d, b, radius, graze, ref t, ref normal);
     }
 
-    /// <summary>As <see cref="SweepSegment"/> for a single point (a segment's end): a ray against a circle.</summary>
-    private static void SweepPoint(Vector2 p, Vector2 d, Vector2 c, float radius, ref float t, ref Vector2 normal)
+    /// <summary>
+    /// As <see cref="SweepSegment"/> for a single point (a segment's end): a ray against a circle. A move
+    /// that comes no closer than <paramref name="graze"/> to the point only grazes it: a body sliding along
+    /// a wall sits up to the sink the slide allows inside its contact radius (the float rounding), and
+    /// taking the wall's end (or a collinear neighbour's) for a contact there turned the slide by the
+    /// square root of that hair (3 mrad for 2e-6 m), so the body left the wall's line and met what the
+    /// exact slide misses; if it goes on towards the wall, the offset line meets it where it comes beside.
+    /// A body already sunk into the circle by no more than the sink meets it at the sink's depth; deeper,
+    /// where it is, when moving more than <see cref="PhysicsConstants.ContactTolerance"/> deeper.
+    /// </summary>
+    private static void SweepPoint(Vector2 p, Vector2 d, Vector2 c, float radius, float graze, ref float t, ref Vector2 normal)
     {
         Vector2 m = p - c;
         float b = Vector2.Dot(m, d);
@@ -170,7 +263,21 @@ internal static class BodySweep
         }
 
         float a = d.LengthSquared();
-        float cc = m.LengthSquared() - (radius * radius);
+        float mm = m.LengthSquared();
+        float circle = radius, limit = graze;
+        if (mm < radius * radius)
+        {
+            circle = MathF.Min(MathF.Sqrt(mm), graze + PhysicsConstants.ContactTolerance);
+            limit = circle - PhysicsConstants.ContactTolerance;
+        }
+
+        float deepest = (m + (d * MathF.Min(-b / a, 1f))).LengthSquared(); // the closest the move comes, squared
+        if (limit > 0f && deepest >= limit * limit)
+        {
+            return; // a graze
+        }
+
+        float cc = mm - (circle * circle);
         float discriminant = (b * b) - (a * cc);
         if (discriminant < 0f)
         {
@@ -208,8 +315,8 @@ internal static class BodySweep
     /// </summary>
     [SkipLocalsInit] // the cut buffers are written before they are read
     public static void SweepPolygon(
-        ReadOnlySpan<Vector3> vertices, Vector2 offset, Vector2 p, Vector2 d, float radius, float zLow, float zHigh,
-        ref float t, ref Vector2 normal)
+        ReadOnlySpan<Vector3> vertices, Vector2 offset, Vector2 p, Vector2 d, float radius, float graze, float zLow, float zHigh,
+        ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
     {
         Span<Vector3> low = stackalloc Vector3[2 * vertices.Length]; // a cut adds at most one vertex per edge
         int lowCount = Clip(vertices, low, zLow, keepAbove: true);
@@ -224,7 +331,7 @@ internal static class BodySweep
         {
             var a = new Vector2(band[j].X + offset.X, band[j].Y + offset.Y);
             var b = new Vector2(band[i].X + offset.X, band[i].Y + offset.Y);
-            SweepSegment(p, d, a, b, radius, ref t, ref normal);
+            SweepSegment(p, d, a, b, radius, graze, ref t, ref normal, ref depth, ref outward);
         }
     }
 

@@ -257,10 +257,7 @@ public sealed class PhysicsEngine
     /// <returns>
     /// As the four-argument call; with <see cref="MovementOptions.SweepStepLength"/> a move stopped part
     /// way returns the last sub-step that was accepted, and with <see cref="MovementOptions.StepDownHeight"/>
-    /// an airborne mover is reported with <c>IsOnGround</c> false over the cell below it. With
-    /// <see cref="MovementOptions.Body"/> the body slides along the walls it meets (<see cref="ResolveOutcome.Slid"/>
-    /// with the wall's normal) and never ends overlapping one; stopped at once, it is refused with
-    /// <see cref="ResolveOutcome.Wall"/> and the wall's normal.
+    /// an airborne mover is reported with <c>IsOnGround</c> false over the cell below it.
     /// </returns>
     /// <exception cref="ArgumentException">As the four-argument call.</exception>
     public ResolveResult Resolve(
@@ -301,8 +298,9 @@ public sealed class PhysicsEngine
     /// <summary>
     /// The body's move: its path among the walls (<see cref="BodyPlanner"/>), walked leg by leg as
     /// point moves, so floors, cells, steps and doorways are decided as for a point. A path with no
-    /// contact is the point move itself. With walkable slope, a leg refused as too steep slides along
-    /// the slope's contour once (<paramref name="contourLeft"/>).
+    /// contact is the point move itself (swept, its sub-steps aimed as a leg's: see <see cref="Leg"/>).
+    /// With walkable slope, a leg refused as too steep slides along the slope's contour once
+    /// (<paramref name="contourLeft"/>).
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve, so a call without a body pays nothing for it
     [SkipLocalsInit] // the path's points are written before they are read
@@ -310,9 +308,14 @@ public sealed class PhysicsEngine
     {
         Span<Vector2> points = stackalloc Vector2[PhysicsConstants.MaxBodyContacts + 2];
         var path = default(BodySweep.Path);
-        if (move == Vector2.Zero || !_body.Plan(pos, cellId, move, stepUp, options.Body!.Value, points, ref path) || path.Contacts == 0)
+        int lbX = 0, lbY = 0;
+        bool planned = move != Vector2.Zero && _body.Plan(pos, cellId, move, stepUp, options.Body!.Value, points, ref path, out lbX, out lbY);
+        if (!planned || path.Contacts == 0)
         {
-            ResolveResult free = PointMove(pos, cellId, move, stepUp, in options);
+            // Free: the point move itself; a swept one aims each sub-step at its point of the path (see Leg).
+            ResolveResult free = planned && options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep
+                ? Leg(pos, cellId, points[0], points[1], _frame.Origin(lbX, lbY), stepUp, in options)
+                : PointMove(pos, cellId, move, stepUp, in options);
             return contourLeft && free.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope
                 ? AlongContour(pos, cellId, move, stepUp, in options, free)
                 : free;
@@ -328,10 +331,11 @@ public sealed class PhysicsEngine
         ResolveResult result = default;
         Vector3 at = pos;
         uint cell = cellId;
+        Vector2 origin = _frame.Origin(lbX, lbY);
         for (int i = 1; i < path.Count; i++)
         {
-            Vector2 leg = points[i] - points[i - 1];
-            ResolveResult next = PointMove(at, cell, leg, stepUp, in options);
+            Vector2 leg = points[i] - (new Vector2(at.X, at.Y) - origin);
+            ResolveResult next = Leg(at, cell, points[i - 1], points[i], origin, stepUp, in options);
             if (next.IsRefused)
             {
                 if (contourLeft && next.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope)
@@ -345,7 +349,47 @@ public sealed class PhysicsEngine
             (result, at, cell) = (next, next.Position, next.CellId);
         }
 
-        return result.Outcome == ResolveOutcome.Moved ? result with { Outcome = ResolveOutcome.Slid, SurfaceNormal = wall } : result;
+        if (result.Outcome != ResolveOutcome.Moved)
+        {
+            return result;
+        }
+
+        // A path whose corners the world frame rounds back onto the start (a body at rest against a corner,
+        // far from the origin) did not slide: it is stopped.
+        bool stayed = result.Position.X == pos.X && result.Position.Y == pos.Y;
+        return result with { Outcome = stayed ? ResolveOutcome.Wall : ResolveOutcome.Slid, SurfaceNormal = wall };
+    }
+
+    /// <summary>
+    /// One leg of a body's path, <paramref name="from"/> → <paramref name="to"/> (landblock-local to
+    /// <paramref name="origin"/>), as a point move: in equal sub-steps when
+    /// <see cref="MovementOptions.SweepStepLength"/> asks, stopping at the first refused one as
+    /// <see cref="Sweep"/> does. Each sub-step aims at its point of the leg from wherever the last answer
+    /// was rounded to, so the world frame's rounding of one sub-step or corner is not carried into the
+    /// next: it piled up past the body's skin at the far corner of the global frame (a 2 m slide in five
+    /// sub-steps ended 3.7 mm into the wall; 5 m moves ended centimetres off their paths).
+    /// </summary>
+    private ResolveResult Leg(Vector3 at, uint cell, Vector2 from, Vector2 to, Vector2 origin, float stepUp, in MovementOptions options)
+    {
+        Vector2 leg = to - from;
+        int steps = options.SweepStepLength is float sweep && leg.LengthSquared() > sweep * sweep
+            ? (int)Math.Min(Math.Ceiling(leg.Length() / (double)sweep), PhysicsConstants.MaxSweepSteps)
+            : 1;
+        ResolveResult result = default;
+        for (int k = 1; k <= steps; k++)
+        {
+            Vector2 target = k == steps ? to : from + (leg * ((float)k / steps));
+            var query = new MoveQuery(at, cell, target - (new Vector2(at.X, at.Y) - origin), stepUp, in options);
+            ResolveResult next = Step(ref query);
+            if (next.IsRefused)
+            {
+                return k == 1 ? next : result with { Outcome = next.Outcome, SurfaceNormal = next.SurfaceNormal };
+            }
+
+            (result, at, cell) = (next, next.Position, next.CellId);
+        }
+
+        return result;
     }
 
     /// <summary>

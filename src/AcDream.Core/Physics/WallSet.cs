@@ -99,10 +99,12 @@ internal ref struct WallSet
 
     /// <summary>
     /// Sweeps the body (contact radius <paramref name="radius"/>) from <paramref name="p"/> along
-    /// <paramref name="d"/> against every gathered wall in the band: the earliest contact below
-    /// <paramref name="t"/>, with its normal.
+    /// <paramref name="d"/> against every gathered wall in the band (a wall's end counts only if the move
+    /// comes closer than <paramref name="graze"/> to it): the earliest contact below
+    /// <paramref name="t"/>, with its normal; and the deepest overlap at <paramref name="p"/> beyond
+    /// <paramref name="depth"/>, with the normal out of it.
     /// </summary>
-    public readonly void Sweep(Vector2 p, Vector2 d, float radius, float zLow, float zHigh, ref float t, ref Vector2 normal)
+    public readonly void Sweep(Vector2 p, Vector2 d, float radius, float graze, float zLow, float zHigh, ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
     {
         // This sweep's own box (the move segment grown by the radius and the contact tolerance): a wall
         // outside it cannot be touched now, whatever the call's box says.
@@ -130,11 +132,11 @@ internal ref struct WallSet
 
                 if (wall.IsUpright)
                 {
-                    BodySweep.SweepSegment(p, d, wall.A + offset, wall.B + offset, radius, ref t, ref normal);
+                    BodySweep.SweepSegment(p, d, wall.A + offset, wall.B + offset, radius, graze, ref t, ref normal, ref depth, ref outward);
                 }
                 else
                 {
-                    BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, zLow, zHigh, ref t, ref normal);
+                    BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
                 }
             }
         }
