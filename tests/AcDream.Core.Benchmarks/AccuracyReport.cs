@@ -22,6 +22,7 @@ internal static class AccuracyReport
         Course(o);
         Slopes(o);
         DoorsOnly(o);
+        BodyAccuracy.Run(o);
     }
 
     private static string F(double v, string format = "0.###") => v.ToString(format, Inv);

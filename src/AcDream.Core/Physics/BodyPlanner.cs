@@ -1,3 +1,4 @@
+using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
@@ -19,19 +20,7 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
     [SkipLocalsInit] // the stack buffers are written before they are read
     public bool Plan(Vector3 position, uint cellId, Vector2 delta, float stepUp, MoverBody body, Span<Vector2> points, ref BodySweep.Path path, out int lbX, out int lbY)
     {
-        Vector2 local;
-        if (CellIds.IsIndoor(cellId))
-        {
-            (lbX, lbY) = (CellIds.LandblockX(cellId), CellIds.LandblockY(cellId));
-            local = frame.Representable(lbX, lbY, new Vector2(position.X, position.Y) - frame.Origin(lbX, lbY));
-        }
-        else
-        {
-            frame.Locate(position, cellId, out lbX, out lbY, out local);
-        }
-
-        LandblockEntry? entry = registry.Get(lbX, lbY);
-        if (entry is null || (CellIds.IsIndoor(cellId) && !entry.TryGetCellIndex(cellId, out _)))
+        if (!Locate(position, cellId, out lbX, out lbY, out Vector2 local, out LandblockEntry? entry))
         {
             return false;
         }
@@ -46,6 +35,57 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
 
         Span<int> cells = stackalloc int[PhysicsConstants.MaxBodyCells];
         var walls = new WallSet(cells, local, reach);
+        Gather(ref walls, entry, cellId, lbX, lbY);
+        BodySweep.Slide(in walls, local, delta, radius, 0.5f * skin, position.Z + stepUp, position.Z + body.Height, points, ref path);
+        return true;
+    }
+
+    /// <summary>
+    /// How far a body of <paramref name="body"/> with its feet at <paramref name="position"/> (world) in
+    /// <paramref name="cellId"/> reaches into the walls of its height band beyond what the float rounding
+    /// may leave it (the sink, half its skin), metres: above zero it overlaps a wall, and
+    /// <paramref name="outward"/> is the unit normal out of the deepest. Zero when its landblock is not loaded.
+    /// </summary>
+    [SkipLocalsInit] // the stack buffer is written before it is read
+    public float Overlap(Vector3 position, uint cellId, float stepUp, MoverBody body, out Vector2 outward)
+    {
+        outward = default;
+        if (!Locate(position, cellId, out int lbX, out int lbY, out Vector2 local, out LandblockEntry? entry))
+        {
+            return 0f;
+        }
+
+        float skin = Skin(lbX, lbY, local, body.Radius);
+        float radius = body.Radius + skin;
+        Span<int> cells = stackalloc int[PhysicsConstants.MaxBodyCells];
+        var walls = new WallSet(cells, local, radius + PhysicsConstants.ContactTolerance);
+        Gather(ref walls, entry, cellId, lbX, lbY);
+        float t = 1f, depth = 0f;
+        Vector2 normal = default;
+        walls.Sweep(local, Vector2.Zero, radius, radius, position.Z + stepUp, position.Z + body.Height, ref t, ref normal, ref depth, ref outward);
+        return depth - (0.5f * skin);
+    }
+
+    /// <summary>The mover's landblock, its landblock-local position and entry; false when not loaded (or the indoor cell is unknown).</summary>
+    private bool Locate(Vector3 position, uint cellId, out int lbX, out int lbY, out Vector2 local, [NotNullWhen(true)] out LandblockEntry? entry)
+    {
+        if (CellIds.IsIndoor(cellId))
+        {
+            (lbX, lbY) = (CellIds.LandblockX(cellId), CellIds.LandblockY(cellId));
+            local = frame.Representable(lbX, lbY, new Vector2(position.X, position.Y) - frame.Origin(lbX, lbY));
+        }
+        else
+        {
+            frame.Locate(position, cellId, out lbX, out lbY, out local);
+        }
+
+        entry = registry.Get(lbX, lbY);
+        return entry is not null && (!CellIds.IsIndoor(cellId) || entry.TryGetCellIndex(cellId, out _));
+    }
+
+    /// <summary>The cells whose walls the body may meet: through portals indoors, over the outdoor squares (and across seams) outdoors.</summary>
+    private void Gather(ref WallSet walls, LandblockEntry entry, uint cellId, int lbX, int lbY)
+    {
         int slot = walls.AddLandblock(entry, Vector2.Zero);
         if (CellIds.IsIndoor(cellId))
         {
@@ -57,9 +97,6 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
             GatherOutdoors(ref walls, slot, entry);
             GatherAcrossSeams(ref walls, lbX, lbY);
         }
-
-        BodySweep.Slide(in walls, local, delta, radius, 0.5f * skin, position.Z + stepUp, position.Z + body.Height, points, ref path);
-        return true;
     }
 
     /// <summary>

@@ -314,8 +314,13 @@ public sealed class PhysicsEngine
         {
             // Free: the point move itself; a swept one aims each sub-step at its point of the path (see Leg).
             ResolveResult free = planned && options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep
-                ? Leg(pos, cellId, points[0], points[1], _frame.Origin(lbX, lbY), stepUp, in options)
+                ? Leg(pos, cellId, points[0], points[1], _frame.Origin(lbX, lbY), pos.Z, stepUp, in options)
                 : PointMove(pos, cellId, move, stepUp, in options);
+            if (!free.IsRefused && LowCeiling(in free, pos.Z, stepUp, in options, out Vector3 ceiling))
+            {
+                return Stopped(pos, cellId, stepUp, in options, ceiling);
+            }
+
             return contourLeft && free.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope
                 ? AlongContour(pos, cellId, move, stepUp, in options, free)
                 : free;
@@ -324,8 +329,7 @@ public sealed class PhysicsEngine
         var wall = new Vector3(path.Normal.X, path.Normal.Y, 0f);
         if (path.Count == 1)
         {
-            ResolveResult stay = Stay(pos, cellId, stepUp, in options);
-            return stay.Outcome == ResolveOutcome.Moved ? stay with { Outcome = ResolveOutcome.Wall, SurfaceNormal = wall } : stay;
+            return Stopped(pos, cellId, stepUp, in options, wall);
         }
 
         ResolveResult result = default;
@@ -335,7 +339,7 @@ public sealed class PhysicsEngine
         for (int i = 1; i < path.Count; i++)
         {
             Vector2 leg = points[i] - (new Vector2(at.X, at.Y) - origin);
-            ResolveResult next = Leg(at, cell, points[i - 1], points[i], origin, stepUp, in options);
+            ResolveResult next = Leg(at, cell, points[i - 1], points[i], origin, pos.Z, stepUp, in options);
             if (next.IsRefused)
             {
                 if (contourLeft && next.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope)
@@ -369,7 +373,7 @@ public sealed class PhysicsEngine
     /// next: it piled up past the body's skin at the far corner of the global frame (a 2 m slide in five
     /// sub-steps ended 3.7 mm into the wall; 5 m moves ended centimetres off their paths).
     /// </summary>
-    private ResolveResult Leg(Vector3 at, uint cell, Vector2 from, Vector2 to, Vector2 origin, float stepUp, in MovementOptions options)
+    private ResolveResult Leg(Vector3 at, uint cell, Vector2 from, Vector2 to, Vector2 origin, float planZ, float stepUp, in MovementOptions options)
     {
         Vector2 leg = to - from;
         int steps = options.SweepStepLength is float sweep && leg.LengthSquared() > sweep * sweep
@@ -386,10 +390,43 @@ public sealed class PhysicsEngine
                 return k == 1 ? next : result with { Outcome = next.Outcome, SurfaceNormal = next.SurfaceNormal };
             }
 
+            if (LowCeiling(in next, planZ, stepUp, in options, out Vector3 ceiling))
+            {
+                return k == 1 ? Stopped(at, cell, stepUp, in options, ceiling) : result with { Outcome = ResolveOutcome.Wall, SurfaceNormal = ceiling };
+            }
+
             (result, at, cell) = (next, next.Position, next.CellId);
         }
 
         return result;
+    }
+
+    /// <summary>
+    /// Whether a body that has stepped up to <paramref name="next"/> (its feet above
+    /// <paramref name="planZ"/>, where its path was planned) meets a wall or ceiling in its height band
+    /// there: a doorway lower than the body above the floor it would stand on stops it, where the band of
+    /// the feet it set out with let it under the lintel (the player, 1.835 m tall, stepped up into the
+    /// cottage's 1.8 m door cells and stood there with its head in the wall). <paramref name="normal"/>:
+    /// out of the deepest such wall, seen from above.
+    /// </summary>
+    private bool LowCeiling(in ResolveResult next, float planZ, float stepUp, in MovementOptions options, out Vector3 normal)
+    {
+        normal = default;
+        if (!(next.Position.Z > planZ + PhysicsConstants.GroundTolerance)
+            || !(_body.Overlap(next.Position, next.CellId, stepUp, options.Body!.Value, out Vector2 outward) > 0f))
+        {
+            return false;
+        }
+
+        normal = new Vector3(outward.X, outward.Y, 0f);
+        return true;
+    }
+
+    /// <summary>A body stopped where it is by a wall of normal <paramref name="wall"/>: <see cref="Stay"/>, reported as a wall.</summary>
+    private ResolveResult Stopped(Vector3 pos, uint cellId, float stepUp, in MovementOptions options, Vector3 wall)
+    {
+        ResolveResult stay = Stay(pos, cellId, stepUp, in options);
+        return stay.Outcome == ResolveOutcome.Moved ? stay with { Outcome = ResolveOutcome.Wall, SurfaceNormal = wall } : stay;
     }
 
     /// <summary>
