@@ -57,6 +57,12 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
 
         float skin = Skin(lbX, lbY, local, body.Radius);
         float radius = body.Radius + skin;
+        float reach = radius + PhysicsConstants.ContactTolerance;
+        if (!CellIds.IsIndoor(cellId) && !AnyWallNear(entry, local, reach) && !NearSeam(local, reach))
+        {
+            return -0.5f * skin; // open ground: no wall to overlap
+        }
+
         Span<int> cells = stackalloc int[PhysicsConstants.MaxBodyCells];
         var walls = new WallSet(cells, local, radius + PhysicsConstants.ContactTolerance);
         Gather(ref walls, entry, cellId, lbX, lbY);
