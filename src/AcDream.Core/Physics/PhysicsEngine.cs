@@ -316,7 +316,9 @@ public sealed class PhysicsEngine
             ResolveResult free = planned && options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep
                 ? Leg(pos, cellId, points[0], points[1], _frame.Origin(lbX, lbY), pos.Z, stepUp, in options)
                 : PointMove(pos, cellId, move, stepUp, in options);
-            if (!free.IsRefused && LowCeiling(in free, pos.Z, stepUp, in options, out Vector3 ceiling))
+            // Not planned for a real move: no wall within the move's box (which holds the end ± the
+            // radius) or no land; either way no ceiling to check at the end.
+            if (!free.IsRefused && (planned || move == Vector2.Zero) && LowCeiling(in free, pos.Z, stepUp, in options, out Vector3 ceiling))
             {
                 return Stopped(pos, cellId, stepUp, in options, ceiling);
             }

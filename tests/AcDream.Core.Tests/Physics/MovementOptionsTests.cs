@@ -258,13 +258,21 @@ public class MovementOptionsTests
         ];
         foreach (MovementOptions options in configurations)
         {
-            // One full pass first, so JIT tiering and on-stack replacement of the loop are done,
-            // then count the second pass: steady state must allocate nothing.
+            // One full pass first, so JIT tiering and on-stack replacement of the loop are mostly done,
+            // then count up to three more passes: steady state must allocate nothing. A per-call
+            // allocation shows in every pass; the runtime's own one-time work (a late tier-up, seen
+            // once in a full-suite run) in one at most, so the quietest pass must be 0 B.
             Run(engine, options);
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            float sink = Run(engine, options);
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-            allocated.Should().Be(0, $"15,000 resolves with {options} allocated {allocated} bytes (sink {sink})");
+            var passes = new List<long>();
+            float sink = 0f;
+            for (int pass = 0; pass < 3 && (passes.Count == 0 || passes[^1] != 0); pass++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                sink += Run(engine, options);
+                passes.Add(GC.GetAllocatedBytesForCurrentThread() - before);
+            }
+
+            passes.Min().Should().Be(0, $"15,000 resolves with {options} allocated {string.Join(", ", passes)} bytes in successive passes (sink {sink})");
         }
 
         static float Run(PhysicsEngine engine, MovementOptions options)
