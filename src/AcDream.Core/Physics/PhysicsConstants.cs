@@ -152,10 +152,12 @@ public static class PhysicsConstants
     public const int MaxBodyContacts = 4;
 
     /// <summary>
-    /// Body: the most cells whose walls one call gathers. Beyond it the farthest portal neighbours are
-    /// not gathered; real cells never come near.
+    /// Body: the most cells whose walls one call gathers (held on the stack, 4 bytes each). Beyond it
+    /// the cells found last (the farthest portal neighbours; outdoors, the last buckets scanned) are
+    /// not gathered, so their walls would not stop the body. The whole Holtburg cottage is 16 cells;
+    /// the margin is for dense towns and long moves.
     /// </summary>
-    public const int MaxBodyCells = 32;
+    public const int MaxBodyCells = 128;
 
     /// <summary>Body: the smallest gap, metres, the body keeps from walls beyond its radius (the world frame's rounding is added to it).</summary>
     public const float BodySkin = 0.00001f;

@@ -274,16 +274,11 @@ public sealed class PhysicsEngine
             return ResolveWithBody(currentPos, currentCellId, move, stepUpHeight, in options, contourLeft: true);
         }
 
-        if (options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep)
-        {
-            return Sweep(currentPos, currentCellId, move, stepUpHeight, in options, sweep);
-        }
-
-        var query = new MoveQuery(currentPos, currentCellId, move, stepUpHeight, in options);
-        return Step(ref query);
+        return PointMove(currentPos, currentCellId, move, stepUpHeight, in options);
     }
 
     /// <summary>A point's move: swept in sub-steps when <see cref="MovementOptions.SweepStepLength"/> asks, else one step.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // Resolve's own path: the same code as before it was shared with the body's
     private ResolveResult PointMove(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options)
     {
         if (options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep)
@@ -340,13 +335,12 @@ public sealed class PhysicsEngine
         Vector2 origin = _frame.Origin(lbX, lbY);
         for (int i = 1; i < path.Count; i++)
         {
-            Vector2 leg = points[i] - (new Vector2(at.X, at.Y) - origin);
             ResolveResult next = Leg(at, cell, points[i - 1], points[i], origin, pos.Z, stepUp, in options);
             if (next.IsRefused)
             {
                 if (contourLeft && next.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope)
                 {
-                    return AlongContour(at, cell, leg, stepUp, in options, next);
+                    return AlongContour(at, cell, points[i] - (new Vector2(at.X, at.Y) - origin), stepUp, in options, next);
                 }
 
                 return i == 1 ? next : result with { Outcome = next.Outcome, SurfaceNormal = next.SurfaceNormal };

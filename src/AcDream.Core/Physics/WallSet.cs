@@ -45,7 +45,7 @@ internal ref struct WallSet
         return _slots++;
     }
 
-    /// <summary>Adds cell <paramref name="cellIndex"/> of slot <paramref name="slot"/> unless present, or the set is full, or its walls lie outside the box; false when full.</summary>
+    /// <summary>Adds cell <paramref name="cellIndex"/> of slot <paramref name="slot"/> unless it is present; false (nothing added) when the set is full.</summary>
     public bool TryAdd(int slot, int cellIndex)
     {
         int key = (slot << 16) | cellIndex;
@@ -64,21 +64,6 @@ internal ref struct WallSet
 
         _cells[_count++] = key;
         return true;
-    }
-
-    /// <summary>Whether the set holds cell <paramref name="cellIndex"/> of slot <paramref name="slot"/>.</summary>
-    public readonly bool Contains(int slot, int cellIndex)
-    {
-        int key = (slot << 16) | cellIndex;
-        for (int i = 0; i < _count; i++)
-        {
-            if (_cells[i] == key)
-            {
-                return true;
-            }
-        }
-
-        return false;
     }
 
     /// <summary>The cell at <paramref name="i"/> (insertion order) with its landblock slot.</summary>
