@@ -43,6 +43,8 @@ public abstract class BodyBenchmarks
 
     protected static ref readonly MovementOptions PlayerOptions => ref Player;
 
+    protected static ref readonly MovementOptions PlayerWithoutBodyOptions => ref PlayerWithoutBody;
+
     protected float Literal(Vector3[] positions, uint[] cells, Vector3[] deltas)
     {
         float sum = 0f;
@@ -247,7 +249,30 @@ public class BodyOutdoorBenchmarks : BodyBenchmarks
         }
 
         Console.WriteLine($"// outdoor movers: the body alone answers as no effect on all {3 * Moves} moves; Player's outcomes (0.1–0.3 m): {Outcomes(Positions, CellIds, Deltas, in PlayerOptions)}");
+
+        // Moves no slope refuses: Player's body never slides along a contour on them, so the two
+        // rows differ by the body's own cost (its open-ground check) alone.
+        for (int n = 0; n < Moves;)
+        {
+            float x = 4f + (random.NextSingle() * 86f), y = 4f + (random.NextSingle() * 184f);
+            var at = new Vector3(x, y, centre.SampleZ(x, y));
+            uint cell = (World.Holtburg & 0xFFFF0000u) | World.OutdoorCell(x, y);
+            Vector3 delta = World.RandomDelta(random, 0.1f, 0.3f);
+            if (Engine.Resolve(at, cell, delta, World.PlayerStepUp, in PlayerWithoutBodyOptions).Outcome != ResolveOutcome.SlopeTooSteep)
+            {
+                (UnrefusedPositions[n], UnrefusedCells[n], UnrefusedDeltas[n]) = (at, cell, delta);
+                n++;
+            }
+        }
+
+        Console.WriteLine($"// outdoor movers no slope refuses: Player's outcomes {Outcomes(UnrefusedPositions, UnrefusedCells, UnrefusedDeltas, in PlayerOptions)}");
     }
+
+    private Vector3[] UnrefusedPositions { get; } = new Vector3[Moves];
+
+    private uint[] UnrefusedCells { get; } = new uint[Moves];
+
+    private Vector3[] UnrefusedDeltas { get; } = new Vector3[Moves];
 
     /// <summary><see cref="MovementOptions.Player"/> without its body on the 0.1–0.3 m moves: the baseline.</summary>
     [Benchmark(Baseline = true, OperationsPerInvoke = Moves)]
@@ -267,6 +292,14 @@ public class BodyOutdoorBenchmarks : BodyBenchmarks
 
     [Benchmark(OperationsPerInvoke = Moves)]
     public float Body_2m() => RunBody(Long);
+
+    /// <summary><see cref="MovementOptions.Player"/> without its body, on moves no slope refuses.</summary>
+    [Benchmark(OperationsPerInvoke = Moves)]
+    public float AllEffectsNoBody_Unrefused() => Run(UnrefusedPositions, UnrefusedCells, UnrefusedDeltas, in PlayerWithoutBodyOptions);
+
+    /// <summary><see cref="MovementOptions.Player"/> on the same moves: the body adds only its open-ground check.</summary>
+    [Benchmark(OperationsPerInvoke = Moves)]
+    public float Player_Unrefused() => Run(UnrefusedPositions, UnrefusedCells, UnrefusedDeltas, in PlayerOptions);
 }
 
 /// <summary>

@@ -28,16 +28,36 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         float skin = Skin(lbX, lbY, local, delta.Length() + body.Radius);
         float radius = body.Radius + skin;
         float reach = delta.Length() + radius + PhysicsConstants.ContactTolerance;
-        if (!CellIds.IsIndoor(cellId) && !AnyWallNear(entry, local, reach) && !NearSeam(local, reach))
-        {
-            return false; // open ground: no wall in reach, the point move is the answer
-        }
-
         Span<int> cells = stackalloc int[PhysicsConstants.MaxBodyCells];
         var walls = new WallSet(cells, local, reach);
         Gather(ref walls, entry, cellId, lbX, lbY);
         BodySweep.Slide(in walls, local, delta, radius, 0.5f * skin, position.Z + stepUp, position.Z + body.Height, points, ref path);
         return true;
+    }
+
+    /// <summary>
+    /// Whether an outdoor move of <paramref name="delta"/> (not zero) needs no plan: its landblock is not
+    /// loaded (the point move holds or refuses it), or no wall lies within the reach of the body's
+    /// widest sweep (the box of the move's start ± its length + the radius and skin) and the box stays
+    /// inside the landblock. Then the point move is the body's answer. Indoor moves are always planned.
+    /// </summary>
+    public bool IsOpenGround(Vector3 position, uint cellId, Vector2 delta, MoverBody body)
+    {
+        if (CellIds.IsIndoor(cellId))
+        {
+            return false;
+        }
+
+        frame.Locate(position, cellId, out int lbX, out int lbY, out Vector2 local);
+        if (registry.Get(lbX, lbY) is not LandblockEntry entry)
+        {
+            return true;
+        }
+
+        float length = delta.Length();
+        float radius = body.Radius + Skin(lbX, lbY, local, length + body.Radius);
+        float reach = length + radius + PhysicsConstants.ContactTolerance;
+        return !NearSeam(local, reach) && !AnyWallNear(entry, local, reach);
     }
 
     /// <summary>

@@ -269,12 +269,16 @@ public sealed class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var move = new Vector2(delta.X, delta.Y);
-        if (options.Body.HasValue)
+        if (options.Body is MoverBody body && (move == Vector2.Zero || !_body.IsOpenGround(currentPos, currentCellId, move, body)))
         {
             return ResolveWithBody(currentPos, currentCellId, move, stepUpHeight, in options, contourLeft: true);
         }
 
-        return PointMove(currentPos, currentCellId, move, stepUpHeight, in options);
+        // No body, or a body on open ground (no wall in its reach): the point move is the answer.
+        ResolveResult result = PointMove(currentPos, currentCellId, move, stepUpHeight, in options);
+        return result.Outcome == ResolveOutcome.SlopeTooSteep && options.Body.HasValue && options.WalkableSlope
+            ? AlongContour(currentPos, currentCellId, move, stepUpHeight, in options, result)
+            : result;
     }
 
     /// <summary>A point's move: swept in sub-steps when <see cref="MovementOptions.SweepStepLength"/> asks, else one step.</summary>
@@ -311,8 +315,7 @@ public sealed class PhysicsEngine
             ResolveResult free = planned && options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep
                 ? Leg(pos, cellId, points[0], points[1], _frame.Origin(lbX, lbY), pos.Z, stepUp, in options)
                 : PointMove(pos, cellId, move, stepUp, in options);
-            // Not planned for a real move: no wall within the move's box (which holds the end ± the
-            // radius) or no land; either way no ceiling to check at the end.
+            // Not planned for a real move: no land under the mover, so no ceiling to check at the end.
             if (!free.IsRefused && (planned || move == Vector2.Zero) && LowCeiling(in free, pos.Z, stepUp, in options, out Vector3 ceiling))
             {
                 return Stopped(pos, cellId, stepUp, in options, ceiling);
@@ -429,6 +432,7 @@ public sealed class PhysicsEngine
     /// Walkable slope with a body: <paramref name="refused"/> was too steep to climb; the move goes on
     /// with its uphill part taken out (along the slope's contour), or the refusal stands.
     /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: rare, and only with a body
     private ResolveResult AlongContour(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, ResolveResult refused)
     {
         var downhill = new Vector2(refused.SurfaceNormal.X, refused.SurfaceNormal.Y);
@@ -446,7 +450,9 @@ public sealed class PhysicsEngine
             return refused;
         }
 
-        ResolveResult along = ResolveWithBody(pos, cellId, contour, stepUp, in options, contourLeft: false);
+        ResolveResult along = _body.IsOpenGround(pos, cellId, contour, options.Body!.Value)
+            ? PointMove(pos, cellId, contour, stepUp, in options)
+            : ResolveWithBody(pos, cellId, contour, stepUp, in options, contourLeft: false);
         return along.IsRefused
             ? refused
             : along with { Outcome = ResolveOutcome.Slid, SurfaceNormal = refused.SurfaceNormal };
