@@ -28,18 +28,19 @@ namespace AcDream.Core.Physics;
 /// </para>
 /// <para>
 /// This class is a facade: the landblock registry (<c>LandblockRegistry</c>), the world frame
-/// (<c>WorldFrame</c>), outdoor resolution (<c>OutdoorResolver</c>), indoor resolution
-/// (<c>IndoorResolver</c>) and the portal search (<c>PortalTraversal</c>) are internal types, each
-/// one concern; <c>docs/physics.md</c> maps them.
+/// (<c>WorldFrame</c>), a point's move (<c>PointMover</c>: outdoor resolution, <c>OutdoorResolver</c>;
+/// indoor resolution, <c>IndoorResolver</c>; the portal search, <c>PortalTraversal</c>) and the body's
+/// (<c>BodyResolver</c>, <c>BodyPlanner</c>) are internal types, each one concern;
+/// <c>docs/physics.md</c> maps them.
 /// </para>
 /// </remarks>
 public sealed class PhysicsEngine
 {
     private readonly LandblockRegistry _registry = new();
     private readonly WorldFrame _frame;
-    private readonly OutdoorResolver _outdoor;
-    private readonly IndoorResolver _indoor;
-    private readonly BodyPlanner _body;
+    private readonly PointMover _point;
+    private readonly BodyPlanner _planner;
+    private readonly BodyResolver _body;
 
     /// <summary>An engine whose world frame is global: world = landblock X·192 + landblock-local metres.</summary>
     public PhysicsEngine()
@@ -62,9 +63,9 @@ public sealed class PhysicsEngine
     {
         _frame = frame;
         var portals = new PortalTraversal(_registry);
-        _outdoor = new OutdoorResolver(_registry, frame, portals);
-        _indoor = new IndoorResolver(_registry, frame, portals);
-        _body = new BodyPlanner(_registry, frame);
+        _point = new PointMover(new OutdoorResolver(_registry, frame, portals), new IndoorResolver(_registry, frame, portals));
+        _planner = new BodyPlanner(_registry, frame);
+        _body = new BodyResolver(_planner, frame, _point);
     }
 
     /// <summary>Number of registered landblocks.</summary>
@@ -242,7 +243,7 @@ public sealed class PhysicsEngine
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         MovementOptions none = default; // no effects: the spec's engine
         var query = new MoveQuery(currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
-        return Step(ref query);
+        return _point.Step(ref query);
     }
 
     /// <summary>
@@ -269,230 +270,17 @@ public sealed class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var move = new Vector2(delta.X, delta.Y);
-        if (options.Body is MoverBody body && (move == Vector2.Zero || !_body.IsOpenGround(currentPos, currentCellId, move, body)))
+        if (options.Body is MoverBody body && (move == Vector2.Zero || !_planner.IsOpenGround(currentPos, currentCellId, move, body)))
         {
-            return ResolveWithBody(currentPos, currentCellId, move, stepUpHeight, in options, contourLeft: true);
+            return _body.Resolve(currentPos, currentCellId, move, stepUpHeight, in options, contourLeft: true);
         }
 
         // No body, or a body on open ground (no wall in its reach): the point move is the answer.
-        ResolveResult result = PointMove(currentPos, currentCellId, move, stepUpHeight, in options);
+        ResolveResult result = _point.Move(currentPos, currentCellId, move, stepUpHeight, in options);
         return result.Outcome == ResolveOutcome.SlopeTooSteep && options.Body.HasValue && options.WalkableSlope
-            ? AlongContour(currentPos, currentCellId, move, stepUpHeight, in options, result)
+            ? _body.AlongContour(currentPos, currentCellId, move, stepUpHeight, in options, result)
             : result;
     }
-
-    /// <summary>A point's move: swept in sub-steps when <see cref="MovementOptions.SweepStepLength"/> asks, else one step.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)] // Resolve's own path: the same code as before it was shared with the body's
-    private ResolveResult PointMove(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options)
-    {
-        if (options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep)
-        {
-            return Sweep(pos, cellId, move, stepUp, in options, sweep);
-        }
-
-        var query = new MoveQuery(pos, cellId, move, stepUp, in options);
-        return Step(ref query);
-    }
-
-    /// <summary>
-    /// The body's move: its path among the walls (<see cref="BodyPlanner"/>), walked leg by leg as
-    /// point moves, so floors, cells, steps and doorways are decided as for a point. A path with no
-    /// contact is the point move itself (swept, its sub-steps aimed as a leg's: see <see cref="Leg"/>).
-    /// With walkable slope, a leg refused as too steep slides along the slope's contour once
-    /// (<paramref name="contourLeft"/>).
-    /// </summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve, so a call without a body pays nothing for it
-    [SkipLocalsInit] // the path's points are written before they are read
-    private ResolveResult ResolveWithBody(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, bool contourLeft)
-    {
-        Span<Vector2> points = stackalloc Vector2[PhysicsConstants.MaxBodyContacts + 2];
-        var path = default(BodySweep.Path);
-        int lbX = 0, lbY = 0;
-        bool planned = move != Vector2.Zero && _body.Plan(pos, cellId, move, stepUp, options.Body!.Value, points, ref path, out lbX, out lbY);
-        if (!planned || path.Contacts == 0)
-        {
-            // Free: the point move itself; a swept one aims each sub-step at its point of the path (see Leg).
-            ResolveResult free = planned && options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep
-                ? Leg(pos, cellId, points[0], points[1], _frame.Origin(lbX, lbY), pos.Z, stepUp, in options)
-                : PointMove(pos, cellId, move, stepUp, in options);
-            // Not planned for a real move: no land under the mover, so no ceiling to check at the end.
-            if (!free.IsRefused && (planned || move == Vector2.Zero) && LowCeiling(in free, pos.Z, stepUp, in options, out Vector3 ceiling))
-            {
-                return Stopped(pos, cellId, stepUp, in options, ceiling);
-            }
-
-            return contourLeft && free.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope
-                ? AlongContour(pos, cellId, move, stepUp, in options, free)
-                : free;
-        }
-
-        var wall = new Vector3(path.Normal.X, path.Normal.Y, 0f);
-        if (path.Count == 1)
-        {
-            return Stopped(pos, cellId, stepUp, in options, wall);
-        }
-
-        ResolveResult result = default;
-        Vector3 at = pos;
-        uint cell = cellId;
-        Vector2 origin = _frame.Origin(lbX, lbY);
-        for (int i = 1; i < path.Count; i++)
-        {
-            ResolveResult next = Leg(at, cell, points[i - 1], points[i], origin, pos.Z, stepUp, in options);
-            if (next.IsRefused)
-            {
-                if (contourLeft && next.Outcome == ResolveOutcome.SlopeTooSteep && options.WalkableSlope)
-                {
-                    return AlongContour(at, cell, points[i] - (new Vector2(at.X, at.Y) - origin), stepUp, in options, next);
-                }
-
-                return i == 1 ? next : result with { Outcome = next.Outcome, SurfaceNormal = next.SurfaceNormal };
-            }
-
-            (result, at, cell) = (next, next.Position, next.CellId);
-        }
-
-        if (result.Outcome != ResolveOutcome.Moved)
-        {
-            return result;
-        }
-
-        // A path whose corners the world frame rounds back onto the start (a body at rest against a corner,
-        // far from the origin) did not slide: it is stopped.
-        bool stayed = result.Position.X == pos.X && result.Position.Y == pos.Y;
-        return result with { Outcome = stayed ? ResolveOutcome.Wall : ResolveOutcome.Slid, SurfaceNormal = wall };
-    }
-
-    /// <summary>
-    /// One leg of a body's path, <paramref name="from"/> → <paramref name="to"/> (landblock-local to
-    /// <paramref name="origin"/>), as a point move: in equal sub-steps when
-    /// <see cref="MovementOptions.SweepStepLength"/> asks, stopping at the first refused one as
-    /// <see cref="Sweep"/> does. Each sub-step aims at its point of the leg from wherever the last answer
-    /// was rounded to, so the world frame's rounding of one sub-step or corner is not carried into the
-    /// next: it piled up past the body's skin at the far corner of the global frame (a 2 m slide in five
-    /// sub-steps ended 3.7 mm into the wall; 5 m moves ended centimetres off their paths).
-    /// </summary>
-    private ResolveResult Leg(Vector3 at, uint cell, Vector2 from, Vector2 to, Vector2 origin, float planZ, float stepUp, in MovementOptions options)
-    {
-        Vector2 leg = to - from;
-        int steps = options.SweepStepLength is float sweep && leg.LengthSquared() > sweep * sweep
-            ? (int)Math.Min(Math.Ceiling(leg.Length() / (double)sweep), PhysicsConstants.MaxSweepSteps)
-            : 1;
-        ResolveResult result = default;
-        for (int k = 1; k <= steps; k++)
-        {
-            Vector2 target = k == steps ? to : from + (leg * ((float)k / steps));
-            var query = new MoveQuery(at, cell, target - (new Vector2(at.X, at.Y) - origin), stepUp, in options);
-            ResolveResult next = Step(ref query);
-            if (next.IsRefused)
-            {
-                return k == 1 ? next : result with { Outcome = next.Outcome, SurfaceNormal = next.SurfaceNormal };
-            }
-
-            if (LowCeiling(in next, planZ, stepUp, in options, out Vector3 ceiling))
-            {
-                return k == 1 ? Stopped(at, cell, stepUp, in options, ceiling) : result with { Outcome = ResolveOutcome.Wall, SurfaceNormal = ceiling };
-            }
-
-            (result, at, cell) = (next, next.Position, next.CellId);
-        }
-
-        return result;
-    }
-
-    /// <summary>
-    /// Whether a body that has stepped up to <paramref name="next"/> (its feet above
-    /// <paramref name="planZ"/>, where its path was planned) meets a wall or ceiling in its height band
-    /// there: a doorway lower than the body above the floor it would stand on stops it, where the band of
-    /// the feet it set out with let it under the lintel (the player, 1.835 m tall, stepped up into the
-    /// cottage's 1.8 m door cells and stood there with its head in the wall). <paramref name="normal"/>:
-    /// out of the deepest such wall, seen from above.
-    /// </summary>
-    private bool LowCeiling(in ResolveResult next, float planZ, float stepUp, in MovementOptions options, out Vector3 normal)
-    {
-        normal = default;
-        if (!(next.Position.Z > planZ + PhysicsConstants.GroundTolerance)
-            || !(_body.Overlap(next.Position, next.CellId, stepUp, options.Body!.Value, out Vector2 outward) > 0f))
-        {
-            return false;
-        }
-
-        normal = new Vector3(outward.X, outward.Y, 0f);
-        return true;
-    }
-
-    /// <summary>A body stopped where it is by a wall of normal <paramref name="wall"/>: <see cref="Stay"/>, reported as a wall.</summary>
-    private ResolveResult Stopped(Vector3 pos, uint cellId, float stepUp, in MovementOptions options, Vector3 wall)
-    {
-        ResolveResult stay = Stay(pos, cellId, stepUp, in options);
-        return stay.Outcome == ResolveOutcome.Moved ? stay with { Outcome = ResolveOutcome.Wall, SurfaceNormal = wall } : stay;
-    }
-
-    /// <summary>
-    /// Walkable slope with a body: <paramref name="refused"/> was too steep to climb; the move goes on
-    /// with its uphill part taken out (along the slope's contour), or the refusal stands.
-    /// </summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: rare, and only with a body
-    private ResolveResult AlongContour(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, ResolveResult refused)
-    {
-        var downhill = new Vector2(refused.SurfaceNormal.X, refused.SurfaceNormal.Y);
-        float length = downhill.Length();
-        if (length == 0f)
-        {
-            return refused;
-        }
-
-        downhill /= length;
-        float uphill = -Vector2.Dot(move, downhill);
-        Vector2 contour = uphill > 0f ? move + (downhill * uphill) : move;
-        if (contour.LengthSquared() < PhysicsConstants.ContactTolerance * PhysicsConstants.ContactTolerance)
-        {
-            return refused;
-        }
-
-        ResolveResult along = _body.IsOpenGround(pos, cellId, contour, options.Body!.Value)
-            ? PointMove(pos, cellId, contour, stepUp, in options)
-            : ResolveWithBody(pos, cellId, contour, stepUp, in options, contourLeft: false);
-        return along.IsRefused
-            ? refused
-            : along with { Outcome = ResolveOutcome.Slid, SurfaceNormal = refused.SurfaceNormal };
-    }
-
-    /// <summary>
-    /// A body stopped at once by a wall stays where it is: the answer of not moving, with the refusal
-    /// ground rule (<see cref="Answers.Refuse"/>): without step down, feet more than the ground tolerance
-    /// above the ground stay in the air.
-    /// </summary>
-    private ResolveResult Stay(Vector3 pos, uint cellId, float stepUp, in MovementOptions options)
-    {
-        ResolveResult stay = PointMove(pos, cellId, Vector2.Zero, stepUp, in options);
-        return options.StepDownHeight is null && stay.IsOnGround && stay.Outcome == ResolveOutcome.Moved
-            && pos.Z - stay.Position.Z > PhysicsConstants.GroundTolerance
-            ? stay with { Position = stay.Position with { Z = pos.Z }, IsOnGround = false }
-            : stay;
-    }
-
-    /// <summary>Equal sub-steps no longer than <paramref name="sweep"/>, stopping at the first refused one, whose outcome the answer reports.</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: its queries would be zeroed on every call, swept or not
-    private ResolveResult Sweep(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, float sweep)
-    {
-        int steps = (int)Math.Min(Math.Ceiling(move.Length() / (double)sweep), PhysicsConstants.MaxSweepSteps);
-        Vector2 step = move / steps;
-        var query = new MoveQuery(pos, cellId, step, stepUp, in options);
-        ResolveResult result = Step(ref query);
-        for (int i = 1; i < steps && !result.IsRefused; i++)
-        {
-            query = new MoveQuery(result.Position, result.CellId, step, stepUp, in options);
-            ResolveResult next = Step(ref query);
-            result = next.IsRefused ? result with { Outcome = next.Outcome, SurfaceNormal = next.SurfaceNormal } : next;
-        }
-
-        return result;
-    }
-
-    /// <summary>One move, end-point checked.</summary>
-    private ResolveResult Step(ref MoveQuery query) =>
-        CellIds.IsIndoor(query.CellId) ? _indoor.Resolve(ref query) : _outdoor.Resolve(ref query);
 
     private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 
