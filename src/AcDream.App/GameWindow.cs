@@ -263,7 +263,7 @@ public sealed class GameWindow : IDisposable
     /// <summary>
     /// Registers a loaded landblock: builds its <see cref="TerrainSurface"/> (the game's triangles,
     /// from the landblock id) and one <see cref="CellSurface"/> per cell whose environment and cell
-    /// struct resolve, and calls <see cref="PhysicsEngine.AddLandblock"/>. A cell that cannot be
+    /// struct resolve, and calls <c>PhysicsEngine.AddLandblock</c>. A cell that cannot be
     /// built is skipped with a warning naming it and the reason.
     /// </summary>
     /// <remarks>

@@ -24,6 +24,9 @@ public sealed class EnvCell
     /// <summary>Connections to neighbouring cells; entry i pairs with <see cref="CellStruct.Portals"/>[i].</summary>
     public List<CellPortal> CellPortals { get; set; } = [];
 
+    /// <summary>Objects inside this cell (e.g. the stairs between a room and its cellar), placed landblock-local.</summary>
+    public List<Stab> StaticObjects { get; set; } = [];
+
     /// <summary>Low 16 bits of the cells visible from this one.</summary>
     public List<ushort> VisibleCells { get; set; } = [];
 }

@@ -147,9 +147,19 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         {
             for (int cy = y0; cy <= y1; cy++)
             {
-                foreach (int cell in entry.WallBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
+                int bucket = (cx * PhysicsConstants.CellsPerSide) + cy;
+                foreach (int cell in entry.WallBuckets[bucket])
                 {
                     CellWalls walls = entry.Cells[cell].Walls;
+                    if (walls.Min.X <= max.X && walls.Max.X >= min.X && walls.Min.Y <= max.Y && walls.Max.Y >= min.Y)
+                    {
+                        return true;
+                    }
+                }
+
+                foreach (int o in entry.ObjectBuckets[bucket])
+                {
+                    CellWalls walls = entry.OutdoorObjects[o].Walls;
                     if (walls.Min.X <= max.X && walls.Max.X >= min.X && walls.Min.Y <= max.Y && walls.Max.Y >= min.Y)
                     {
                         return true;
@@ -202,10 +212,20 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         {
             for (int cy = y0; cy <= y1; cy++)
             {
-                foreach (int cell in entry.WallBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
+                int bucket = (cx * PhysicsConstants.CellsPerSide) + cy;
+                foreach (int cell in entry.WallBuckets[bucket])
                 {
                     CellWalls cellWalls = entry.Cells[cell].Walls;
                     if (walls.Overlaps(cellWalls.Min, cellWalls.Max, offset) && !walls.TryAdd(slot, cell))
+                    {
+                        return;
+                    }
+                }
+
+                foreach (int o in entry.ObjectBuckets[bucket])
+                {
+                    CellWalls objectWalls = entry.OutdoorObjects[o].Walls;
+                    if (walls.Overlaps(objectWalls.Min, objectWalls.Max, offset) && !walls.TryAdd(slot, WallSet.ObjectFlag | o))
                     {
                         return;
                     }

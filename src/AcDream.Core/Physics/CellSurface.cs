@@ -93,7 +93,7 @@ public sealed class CellSurface
         List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> physics = PlacePhysicsPolygons(cell, cellStruct, transform);
         _floors = BuildFloors(physics);
         (Portals, _portalShapes) = BuildPortals(cell, cellId, envCell, cellStruct, transform);
-        Walls = CellWalls.Build(cell, physics, _portalShapes);
+        Walls = CellWalls.Build(cell, physics, _portalShapes, [], nameof(cellStruct));
 
         if (_floors.Length > 0)
         {
@@ -116,8 +116,50 @@ public sealed class CellSurface
         }
     }
 
+    /// <summary>The engine's copy of <paramref name="cell"/> with the objects standing in it (its <c>StaticObjects</c>), and whether its building has a registered shell.</summary>
+    private CellSurface(CellSurface cell, ObjectSurface[] objects, bool shelled)
+    {
+        _floors = cell._floors;
+        _portalShapes = cell._portalShapes;
+        _grid = cell._grid;
+        CellId = cell.CellId;
+        Origin = cell.Origin;
+        Portals = cell.Portals;
+        FloorMin = cell.FloorMin;
+        FloorMax = cell.FloorMax;
+        Walls = cell.Walls;
+        Objects = objects;
+        IsShelled = shelled;
+    }
+
     /// <summary>Whether the cell has any walkable floor (a stairwell shaft has none).</summary>
     internal bool HasFloor => _floors.Length > 0;
+
+    /// <summary>The objects standing in this cell (the engine's copy; empty on a caller's).</summary>
+    internal ObjectSurface[] Objects { get; } = [];
+
+    /// <summary>Whether the cell belongs to a building whose shell is registered: entering it from outdoors is decided by the shell's walls.</summary>
+    internal bool IsShelled { get; }
+
+    /// <summary>This cell with <paramref name="objects"/> standing in it and its shell flag: a new instance, this one unchanged.</summary>
+    internal CellSurface WithObjects(ObjectSurface[] objects, bool shelled) => new(this, objects, shelled);
+
+    /// <summary>
+    /// The ground a mover with its feet at <paramref name="feetZ"/> and step <paramref name="stepUp"/>
+    /// stands on at (x, y): the cell's floor nearest the feet, or the floor of an object standing in the
+    /// cell that is higher than that and no more than the step above the feet (a thing on the floor is
+    /// climbed when it is low enough). Without objects, exactly <see cref="TrySampleFloor(float, float, float, out float)"/>.
+    /// </summary>
+    internal bool TrySampleGround(float x, float y, float feetZ, float stepUp, out float z)
+    {
+        bool found = TrySampleFloor(x, y, feetZ, out z);
+        if (Objects.Length == 0)
+        {
+            return found;
+        }
+
+        return ObjectGeometry.Raise(Objects, x, y, feetZ + stepUp, found, ref z) || found;
+    }
 
     /// <summary>Landblock-local XY bounds of the floor, grown by the edge tolerance; empty when there is no floor.</summary>
     internal Vector2 FloorMin { get; }
@@ -228,12 +270,15 @@ public sealed class CellSurface
     /// The walkable triangles of this cell's floor, exactly as the engine samples them (landblock-local
     /// metres): what a map should draw so that it cannot disagree with the physics. A new array each call.
     /// </summary>
-    public FloorTriangleInfo[] GetFloorTriangles()
+    public FloorTriangleInfo[] GetFloorTriangles() => FloorInfos(_floors);
+
+    /// <summary>The triangles as a caller sees them: a new array.</summary>
+    internal static FloorTriangleInfo[] FloorInfos(FloorTriangle[] floors)
     {
-        var result = new FloorTriangleInfo[_floors.Length];
+        var result = new FloorTriangleInfo[floors.Length];
         for (int i = 0; i < result.Length; i++)
         {
-            ref readonly FloorTriangle t = ref _floors[i];
+            ref readonly FloorTriangle t = ref floors[i];
             result[i] = new FloorTriangleInfo(
                 new Vector3(t.A, t.ZAt(t.A)), new Vector3(t.B, t.ZAt(t.B)), new Vector3(t.C, t.ZAt(t.C)));
         }
@@ -258,7 +303,8 @@ public sealed class CellSurface
         return placed;
     }
 
-    private static FloorTriangle[] BuildFloors(List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> physics)
+    /// <summary>The walkable polygons (winding normal Z ≥ <see cref="PhysicsConstants.FloorZ"/>), fan-triangulated.</summary>
+    internal static FloorTriangle[] BuildFloors(List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> physics)
     {
         var triangles = new List<FloorTriangle>();
         foreach ((_, Vector3[] v, Vector3 normal) in physics)

@@ -8,11 +8,18 @@ namespace AcDream.Core.Physics;
 /// <see cref="CellWalls.Vertices"/>.
 /// </summary>
 /// <remarks>
+/// <para>
 /// A vertical rectangle (every vertex at one of the two ends along the wall and at its lowest or
 /// highest Z: most real walls) is the same segment <see cref="A"/>–<see cref="B"/> seen from above at
 /// every height it spans, so it needs no cutting to a band (<see cref="IsUpright"/>).
+/// </para>
+/// <para>
+/// A round wall (an object's cylinder) is upright with <see cref="A"/> = <see cref="B"/> = its axis
+/// and <see cref="Radius"/> > 0: the body keeps the sum of the two radii from the axis. Planar walls
+/// have radius 0.
+/// </para>
 /// </remarks>
-internal readonly record struct WallPolygon(int First, int Count, float ZMin, float ZMax, Vector2 Min, Vector2 Max, bool IsUpright, Vector2 A, Vector2 B);
+internal readonly record struct WallPolygon(int First, int Count, float ZMin, float ZMax, Vector2 Min, Vector2 Max, bool IsUpright, Vector2 A, Vector2 B, float Radius = 0f);
 
 /// <summary>
 /// The walls of one cell, built once when the cell is: every physics polygon that is not a floor
@@ -59,8 +66,15 @@ internal sealed class CellWalls
     /// floors and any polygon that lies in the plane of one of <paramref name="portals"/> with its
     /// centre inside the opening.
     /// </summary>
+    /// <param name="cell">Names the cell or object in messages.</param>
+    /// <param name="polygons">The placed physics polygons.</param>
+    /// <param name="portals">The cell's portals (none for an object).</param>
+    /// <param name="cylinders">Round walls: each standing on its base, landblock-local.</param>
+    /// <param name="argument">The argument a bad polygon came in.</param>
     /// <exception cref="ArgumentException">A wall polygon has more than <see cref="PhysicsConstants.MaxWallPolygonVertices"/> vertices.</exception>
-    public static CellWalls Build(string cell, List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> polygons, PortalShape[] portals)
+    public static CellWalls Build(
+        string cell, List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> polygons, PortalShape[] portals,
+        List<(Vector3 Base, float Radius, float Height)> cylinders, string argument)
     {
         var walls = new List<WallPolygon>();
         var vertices = new List<Vector3>();
@@ -75,7 +89,7 @@ internal sealed class CellWalls
             {
                 throw new ArgumentException(
                     $"{cell}: physics polygon {id} has {v.Length} vertices; a wall may have at most {PhysicsConstants.MaxWallPolygonVertices}.",
-                    "cellStruct");
+                    argument);
             }
 
             float zMin = float.MaxValue, zMax = float.MinValue;
@@ -91,6 +105,15 @@ internal sealed class CellWalls
             (bool upright, Vector2 a, Vector2 b) = Upright(v, normal, zMin, zMax);
             walls.Add(new WallPolygon(vertices.Count, v.Length, zMin, zMax, min, max, upright, a, b));
             vertices.AddRange(v);
+        }
+
+        foreach ((Vector3 b, float r, float h) in cylinders)
+        {
+            if (r > 0f && h > 0f)
+            {
+                var axis = new Vector2(b.X, b.Y);
+                walls.Add(new WallPolygon(vertices.Count, 0, b.Z, b.Z + h, axis - new Vector2(r), axis + new Vector2(r), true, axis, axis, r));
+            }
         }
 
         return walls.Count == 0 ? None : new CellWalls([.. walls], [.. vertices]);

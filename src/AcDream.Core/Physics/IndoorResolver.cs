@@ -30,6 +30,12 @@ internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame fram
         q.P1 = frame.Representable(lbX, lbY, q.P0 + q.Delta);
         Landing landing = portals.FindLanding(ref q, Hop.Start(cellIndex));
         CellSurface cell = entry.Cells[cellIndex];
+        if ((cell.Objects.Length > 0 || (landing.Kind == Arrival.Floor && entry.Cells[landing.CellIndex].Objects.Length > 0))
+            && CrossesObjectWall(ref q, cell, landing, out Vector3 wall))
+        {
+            return Refuse(ref q, cell, ResolveOutcome.Wall, wall);
+        }
+
         switch (landing.Kind)
         {
             case Arrival.Floor or Arrival.Terrain when IsStepTooHigh(cell, q.P0, q.Z, landing.Z, q.StepUp):
@@ -52,6 +58,26 @@ internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame fram
         }
     }
 
+    /// <summary>
+    /// Whether the move crosses a wall of an object standing in its start cell or the cell it lands in,
+    /// at the feet plus the step (lower walls are steps); <paramref name="normal"/>: the first one's.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a cell without objects pays nothing for it
+    private static bool CrossesObjectWall(ref MoveQuery q, CellSurface cell, Landing landing, out Vector3 normal)
+    {
+        float t = 2f;
+        normal = default;
+        int hit = -1;
+        float h = q.Z + q.StepUp;
+        ObjectGeometry.FirstCrossing(cell.Objects, q.P0, q.P1, h, ref t, ref normal, ref hit);
+        if (landing.Kind == Arrival.Floor && q.Entry.Cells[landing.CellIndex] is { } there && there != cell)
+        {
+            ObjectGeometry.FirstCrossing(there.Objects, q.P0, q.P1, h, ref t, ref normal, ref hit);
+        }
+
+        return t <= 1f;
+    }
+
     /// <summary>Out of line, so Resolve's frame carries no string builder to zero on every call.</summary>
     [DoesNotReturn]
     [MethodImpl(MethodImplOptions.NoInlining)]
@@ -62,7 +88,7 @@ internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame fram
     private ResolveResult Refuse(ref MoveQuery q, CellSurface cell, ResolveOutcome why, Vector3 normal = default) =>
         Answers.Refuse(
             in frame, q.Entry.X, q.Entry.Y, q.P0, q.Z,
-            cell.TrySampleFloor(q.P0.X, q.P0.Y, q.Z, out float floorHere) ? floorHere : null,
+            cell.TrySampleGround(q.P0.X, q.P0.Y, q.Z, q.StepUp, out float floorHere) ? floorHere : null,
             q.CellId, in q.Options, why, normal);
 
     /// <summary>
@@ -72,5 +98,5 @@ internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame fram
     /// </summary>
     private static bool IsStepTooHigh(CellSurface cell, Vector2 p0, float z, float newZ, float stepUp) =>
         newZ - z > stepUp
-        && (!cell.TrySampleFloor(p0.X, p0.Y, z, out float floorHere) || newZ - MathF.Max(z, floorHere) > stepUp);
+        && (!cell.TrySampleGround(p0.X, p0.Y, z, stepUp, out float floorHere) || newZ - MathF.Max(z, floorHere) > stepUp);
 }

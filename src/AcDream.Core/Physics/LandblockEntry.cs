@@ -17,12 +17,13 @@ internal sealed class LandblockEntry
 
     private readonly Dictionary<uint, int> _indexById;
 
-    public LandblockEntry(int x, int y, TerrainSurface terrain, CellSurface[] cells)
+    public LandblockEntry(int x, int y, TerrainSurface terrain, CellSurface[] cells, ObjectSurface[] outdoorObjects)
     {
         X = x;
         Y = y;
         Terrain = terrain;
         Cells = cells;
+        OutdoorObjects = outdoorObjects;
         _indexById = new Dictionary<uint, int>(cells.Length);
         for (int i = 0; i < cells.Length; i++)
         {
@@ -47,6 +48,7 @@ internal sealed class LandblockEntry
 
         EntryBuckets = BuildBuckets(cells, static c => c.HasFloor ? (c.FloorMin, c.FloorMax) : null);
         WallBuckets = BuildBuckets(cells, static c => c.Walls.Polygons.Length > 0 ? (c.Walls.Min, c.Walls.Max) : null);
+        ObjectBuckets = BuildBuckets(outdoorObjects, static o => (new Vector2(o.BoundsMin.X, o.BoundsMin.Y), new Vector2(o.BoundsMax.X, o.BoundsMax.Y)));
     }
 
     public int X { get; }
@@ -73,10 +75,16 @@ internal sealed class LandblockEntry
     /// </summary>
     public int[][] WallBuckets { get; }
 
+    /// <summary>The objects standing outdoors (a <c>LandBlockInfo</c>'s objects and building shells).</summary>
+    public ObjectSurface[] OutdoorObjects { get; }
+
+    /// <summary>Per outdoor cell: the indices of the outdoor objects whose bounds overlap it (clamped to the landblock). A move looks only at these.</summary>
+    public int[][] ObjectBuckets { get; }
+
     public bool TryGetCellIndex(uint cellId, out int index) => _indexById.TryGetValue(cellId, out index);
 
-    /// <summary>Per outdoor cell, the cells whose bounds (from <paramref name="bounds"/>; null: none) overlap it.</summary>
-    private static int[][] BuildBuckets(CellSurface[] cells, Func<CellSurface, (Vector2 Min, Vector2 Max)?> bounds)
+    /// <summary>Per outdoor cell, the items whose bounds (from <paramref name="bounds"/>; null: none) overlap it.</summary>
+    private static int[][] BuildBuckets<T>(T[] cells, Func<T, (Vector2 Min, Vector2 Max)?> bounds)
     {
         const int n = PhysicsConstants.CellsPerSide;
         var lists = new List<int>?[n * n];

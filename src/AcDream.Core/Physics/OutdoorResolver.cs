@@ -39,7 +39,13 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         WorldFrame.Wrap(ref candidate.X, ref toX); // rounding can put it on the far seam
         WorldFrame.Wrap(ref candidate.Y, ref toY);
         LandblockEntry? there = toX == lbX && toY == lbY ? here : registry.Get(toX, toY); // one read of each slot per call
-        q.Stand = new Standing(lbX, lbY, local, here.Terrain.SampleZUnchecked(local.X, local.Y), hereCellId);
+        float groundHere = here.Terrain.SampleZUnchecked(local.X, local.Y);
+        if (here.OutdoorObjects.Length > 0)
+        {
+            ObjectGeometry.RaiseOutdoors(here, local.X, local.Y, position.Z + q.StepUp, true, ref groundHere, out _);
+        }
+
+        q.Stand = new Standing(lbX, lbY, local, groundHere, hereCellId);
         q.Here = here;
         if (there is null)
         {
@@ -50,9 +56,44 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         q.P0 = candidate - delta; // the mover, in the candidate's landblock frame
         q.P1 = candidate;
         float terrainZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
+        if (there.OutdoorObjects.Length > 0 || here.OutdoorObjects.Length > 0)
+        {
+            return AmongObjects(ref q, terrainZ);
+        }
+
         return TryEnterCell(there, candidate, terrainZ, q.StepUp, out int cellIndex, out float floorZ)
             ? EnterCell(ref q, cellIndex, floorZ)
-            : WalkTerrain(ref q, terrainZ);
+            : WalkTerrain(ref q, terrainZ, onObject: false);
+    }
+
+    /// <summary>
+    /// The move among objects: refused at the first object wall it crosses at the feet plus the step (a
+    /// shell's is the building's outer wall); else it ends on the highest floor under the end point no
+    /// more than the step above the feet, the terrain or an object's, and goes on as without objects.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a landblock without objects pays nothing for it
+    private ResolveResult AmongObjects(ref MoveQuery q, float terrainZ)
+    {
+        float h = q.Z + q.StepUp, t = 2f;
+        Vector3 normal = default;
+        int there = -1, here = -1;
+        ObjectGeometry.FirstCrossingOutdoors(q.Entry, q.P0, q.P1, h, ref t, ref normal, ref there);
+        if (q.Here != q.Entry)
+        {
+            ObjectGeometry.FirstCrossingOutdoors(q.Here!, q.Stand.Local, q.Stand.Local + q.Delta, h, ref t, ref normal, ref here);
+        }
+
+        ObjectSurface? wall = here >= 0 ? q.Here!.OutdoorObjects[here] : there >= 0 ? q.Entry.OutdoorObjects[there] : null;
+        if (wall is not null)
+        {
+            return Refuse(ref q, wall.IsBuilding ? ResolveOutcome.OuterWall : ResolveOutcome.Wall, normal);
+        }
+
+        float groundZ = terrainZ;
+        bool onObject = ObjectGeometry.RaiseOutdoors(q.Entry, q.P1.X, q.P1.Y, h, true, ref groundZ, out _);
+        return TryEnterCell(q.Entry, q.P1, groundZ, q.StepUp, out int cellIndex, out float floorZ)
+            ? EnterCell(ref q, cellIndex, floorZ)
+            : WalkTerrain(ref q, groundZ, onObject);
     }
 
     /// <summary>The move ends over cell <paramref name="cellIndex"/>'s floor at the ground there: entered, unless its edge is a step too high or (doors only) no door leads in.</summary>
@@ -63,7 +104,8 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
             return Refuse(ref q, ResolveOutcome.StepTooHigh); // the floor's edge is a step too high
         }
 
-        if (q.Options.DoorsOnly && !StartsOverFloor(q.Entry, cellIndex, q.P0, q.Z, q.StepUp) && !TryEnterByDoor(ref q, out cellIndex, out floorZ))
+        if (q.Options.DoorsOnly && !q.Entry.Cells[cellIndex].IsShelled
+            && !StartsOverFloor(q.Entry, cellIndex, q.P0, q.Z, q.StepUp) && !TryEnterByDoor(ref q, out cellIndex, out floorZ))
         {
             return Refuse(ref q, ResolveOutcome.OuterWall);
         }
@@ -71,8 +113,11 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         return Answers.Land(frame.ToWorld(q.Entry.X, q.Entry.Y, q.P1, floorZ), q.Z, q.Entry.Cells[cellIndex].CellId, in q.Options);
     }
 
-    /// <summary>The move ends on the terrain at <paramref name="terrainZ"/>: the storey, step and slope checks, then on it.</summary>
-    private ResolveResult WalkTerrain(ref MoveQuery q, float terrainZ)
+    /// <summary>
+    /// The move ends on the terrain at <paramref name="terrainZ"/> (or on an object's floor there,
+    /// <paramref name="onObject"/>: walkable by definition): the storey, step and slope checks, then on it.
+    /// </summary>
+    private ResolveResult WalkTerrain(ref MoveQuery q, float terrainZ, bool onObject)
     {
         LandblockEntry there = q.Entry;
         if (q.Options.DoorsOnly && StepsIntoStorey(there, q.P0, q.Z, q.P1, terrainZ))
@@ -85,7 +130,7 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
             return Refuse(ref q, ResolveOutcome.StepTooHigh, there.Terrain.NormalUnchecked(q.P1.X, q.P1.Y));
         }
 
-        if (q.Options.WalkableSlope && terrainZ > q.Z && there.Terrain.NormalUnchecked(q.P1.X, q.P1.Y) is var normal && normal.Z < PhysicsConstants.FloorZ)
+        if (q.Options.WalkableSlope && !onObject && terrainZ > q.Z && there.Terrain.NormalUnchecked(q.P1.X, q.P1.Y) is var normal && normal.Z < PhysicsConstants.FloorZ)
         {
             return Refuse(ref q, ResolveOutcome.SlopeTooSteep, normal);
         }
@@ -163,7 +208,7 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         foreach (int i in entry.EntryBuckets[CellIds.OutdoorCellNumberUnchecked(p1.X, p1.Y) - 1])
         {
             CellSurface cell = entry.Cells[i];
-            if (cell.TrySampleFloor(p1.X, p1.Y, z1, out float there) && IsStorey(there - z1) && !IsPastOutdoorDoorway(entry, i, p1)
+            if (!cell.IsShelled && cell.TrySampleFloor(p1.X, p1.Y, z1, out float there) && IsStorey(there - z1) && !IsPastOutdoorDoorway(entry, i, p1)
                 && !(cell.TrySampleFloor(p0.X, p0.Y, z0, out float here) && IsStorey(here - z0)))
             {
                 return true;

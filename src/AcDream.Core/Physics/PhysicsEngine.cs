@@ -18,7 +18,7 @@ namespace AcDream.Core.Physics;
 /// </para>
 /// <para>
 /// Threads: any number of threads may call <c>Resolve</c> (and the other queries) at the same time,
-/// and one writer thread may call <see cref="AddLandblock"/> and <see cref="RemoveLandblock"/> while
+/// and one writer thread may call <see cref="AddLandblock(uint, TerrainSurface, IReadOnlyList{CellSurface})"/> and <see cref="RemoveLandblock"/> while
 /// they do. Each landblock is published whole, in one reference write, and never changed afterwards,
 /// so a resolver sees it either wholly before or wholly after a change, never half of one: one call
 /// reads each landblock once. (A move across a seam reads two landblocks, each whole, possibly one
@@ -111,14 +111,40 @@ public sealed class PhysicsEngine
     /// <param name="normal">The ground's unit normal (pointing up).</param>
     /// <returns>False when the landblock is not loaded, the cell is unknown, or no floor of the cell lies under the position.</returns>
     /// <exception cref="ArgumentException">A coordinate is not finite.</exception>
-    public bool TryGetGround(Vector3 worldPosition, uint cellId, out float groundZ, out Vector3 normal)
+    public bool TryGetGround(Vector3 worldPosition, uint cellId, out float groundZ, out Vector3 normal) =>
+        TryGetGround(worldPosition, cellId, 0f, out groundZ, out normal, out _);
+
+    /// <summary>
+    /// The ground a mover with its feet at <paramref name="worldPosition"/> and step
+    /// <paramref name="stepUpHeight"/> stands on, as <c>Resolve</c> samples it: the terrain (outdoors) or
+    /// the cell's floor nearest the feet (indoors), or an object's floor above that and no more than the
+    /// step above the feet; and which object's floor it is.
+    /// </summary>
+    /// <param name="worldPosition">World metres; Z is the feet.</param>
+    /// <param name="cellId">The cell the position is in, or an outdoor id / 0.</param>
+    /// <param name="stepUpHeight">The mover's step, metres, ≥ 0.</param>
+    /// <param name="groundZ">The ground's Z, metres.</param>
+    /// <param name="normal">The ground's unit normal (pointing up).</param>
+    /// <param name="objectId">The GfxObj or Setup id of the object whose floor it is; 0 for the terrain or a cell's floor.</param>
+    /// <returns>False when the landblock is not loaded, the cell is unknown, or nothing lies under the position.</returns>
+    /// <exception cref="ArgumentException">A coordinate or the step is not finite, or the step is negative.</exception>
+    public bool TryGetGround(Vector3 worldPosition, uint cellId, float stepUpHeight, out float groundZ, out Vector3 normal, out uint objectId)
     {
         if (!IsFinite(worldPosition))
         {
             throw new ArgumentException($"world position {worldPosition} must be finite.", nameof(worldPosition));
         }
 
-        (groundZ, normal) = (0f, default);
+        if (!(stepUpHeight >= 0f) || !float.IsFinite(stepUpHeight))
+        {
+            throw new ArgumentException($"step height {stepUpHeight} must be finite and ≥ 0.", nameof(stepUpHeight));
+        }
+
+        (groundZ, normal, objectId) = (0f, default, 0u);
+        float ceiling = worldPosition.Z + stepUpHeight;
+        int hit;
+        ReadOnlySpan<ObjectSurface> objects;
+        Vector2 p;
         if (CellIds.IsIndoor(cellId))
         {
             int x = CellIds.LandblockX(cellId), y = CellIds.LandblockY(cellId);
@@ -127,19 +153,94 @@ public sealed class PhysicsEngine
                 return false;
             }
 
-            Vector2 p = _frame.Representable(x, y, new Vector2(worldPosition.X, worldPosition.Y) - _frame.Origin(x, y));
-            return entry.Cells[index].TrySampleFloor(p.X, p.Y, worldPosition.Z, out groundZ, out normal);
+            p = _frame.Representable(x, y, new Vector2(worldPosition.X, worldPosition.Y) - _frame.Origin(x, y));
+            CellSurface cell = entry.Cells[index];
+            bool found = cell.TrySampleFloor(p.X, p.Y, worldPosition.Z, out groundZ, out normal);
+            objects = cell.Objects;
+            if (!ObjectGeometry.Raise(objects, p.X, p.Y, ceiling, found, ref groundZ, out hit))
+            {
+                return found;
+            }
         }
-
-        _frame.Locate(worldPosition, cellId, out int lbX, out int lbY, out Vector2 local);
-        if (_registry.Get(lbX, lbY) is not LandblockEntry land)
+        else
         {
-            return false;
+            _frame.Locate(worldPosition, cellId, out int lbX, out int lbY, out p);
+            if (_registry.Get(lbX, lbY) is not LandblockEntry land)
+            {
+                return false;
+            }
+
+            groundZ = land.Terrain.SampleZUnchecked(p.X, p.Y);
+            normal = land.Terrain.NormalUnchecked(p.X, p.Y);
+            objects = land.OutdoorObjects;
+            if (objects.Length == 0 || !ObjectGeometry.RaiseOutdoors(land, p.X, p.Y, ceiling, true, ref groundZ, out hit))
+            {
+                return true;
+            }
         }
 
-        groundZ = land.Terrain.SampleZUnchecked(local.X, local.Y);
-        normal = land.Terrain.NormalUnchecked(local.X, local.Y);
+        objectId = objects[hit].ObjectId;
+        normal = objects[hit].FloorNormal(p.X, p.Y, groundZ);
         return true;
+    }
+
+    /// <summary>
+    /// The object with a wall nearest a world position, seen from above, within <paramref name="reach"/>
+    /// metres: among the outdoor objects of the landblock under it (outdoor <paramref name="cellId"/>) or
+    /// the objects standing in the cell; walls spanning the position's Z up to 2 m above it. For a host's
+    /// reports (which object stopped a mover); not used by <c>Resolve</c>.
+    /// </summary>
+    /// <param name="worldPosition">World metres.</param>
+    /// <param name="cellId">The cell the position is in, or an outdoor id / 0.</param>
+    /// <param name="reach">How far to look, metres, ≥ 0.</param>
+    /// <returns>The object's GfxObj or Setup id, or 0 when no object's wall is within reach.</returns>
+    /// <exception cref="ArgumentException">A coordinate or the reach is not finite, or the reach is negative.</exception>
+    public uint ObjectWallNear(Vector3 worldPosition, uint cellId, float reach)
+    {
+        if (!IsFinite(worldPosition) || !float.IsFinite(reach) || reach < 0f)
+        {
+            throw new ArgumentException($"world position {worldPosition} and reach {reach} must be finite, the reach ≥ 0.", nameof(worldPosition));
+        }
+
+        ObjectSurface[] objects;
+        Vector2 p;
+        if (CellIds.IsIndoor(cellId))
+        {
+            int x = CellIds.LandblockX(cellId), y = CellIds.LandblockY(cellId);
+            if (_registry.Get(x, y) is not LandblockEntry entry || !entry.TryGetCellIndex(cellId, out int index))
+            {
+                return 0;
+            }
+
+            p = _frame.Representable(x, y, new Vector2(worldPosition.X, worldPosition.Y) - _frame.Origin(x, y));
+            objects = entry.Cells[index].Objects;
+        }
+        else
+        {
+            _frame.Locate(worldPosition, cellId, out int lbX, out int lbY, out p);
+            objects = _registry.Get(lbX, lbY)?.OutdoorObjects ?? [];
+        }
+
+        uint best = 0;
+        float bestDistance = reach;
+        foreach (ObjectSurface o in objects)
+        {
+            foreach (WallPolygon w in o.Walls.Polygons)
+            {
+                if (w.ZMax < worldPosition.Z || w.ZMin > worldPosition.Z + 2f)
+                {
+                    continue;
+                }
+
+                float distance = w.IsUpright ? Geometry.DistanceToSegment(p, w.A, w.B) - w.Radius : Vector2.Distance(p, Vector2.Clamp(p, w.Min, w.Max));
+                if (distance <= bestDistance)
+                {
+                    (best, bestDistance) = (o.ObjectId, distance);
+                }
+            }
+        }
+
+        return best;
     }
 
     /// <summary>
@@ -159,8 +260,32 @@ public sealed class PhysicsEngine
     public void AddLandblock(
         uint landblockId,
         TerrainSurface terrain,
-        IReadOnlyList<CellSurface> cells)
+        IReadOnlyList<CellSurface> cells) => AddLandblock(landblockId, terrain, cells, []);
+
+    /// <summary>
+    /// Register terrain, EnvCell surfaces and the objects of a loaded landblock (see
+    /// <see cref="ObjectSurface"/>): objects with <see cref="ObjectSurface.CellId"/> 0 stand outdoors,
+    /// the others in their cell. With no objects, exactly the three-argument call.
+    /// </summary>
+    /// <remarks>
+    /// As the three-argument call: checked and built before anything changes, published in one step.
+    /// A building shell marks its door cells, and every cell reached from them through portals, as
+    /// shelled: entering them from outdoors is then decided by the shell's walls and openings, and the
+    /// doors-only rule no longer applies to them.
+    /// </remarks>
+    /// <param name="landblockId">The landblock, <c>0xXXYYFFFF</c> or <c>0xXXYY0000</c>.</param>
+    /// <param name="terrain">Its terrain.</param>
+    /// <param name="cells">Its indoor cells (may be empty).</param>
+    /// <param name="objects">Its objects (may be empty), landblock-local.</param>
+    /// <exception cref="ArgumentNullException">An argument, a cell or an object is null.</exception>
+    /// <exception cref="ArgumentException">As the three-argument call; or an object stands in a cell that is not among <paramref name="cells"/>, or a building's door cell is not among them.</exception>
+    public void AddLandblock(
+        uint landblockId,
+        TerrainSurface terrain,
+        IReadOnlyList<CellSurface> cells,
+        IReadOnlyList<ObjectSurface> objects)
     {
+        ArgumentNullException.ThrowIfNull(objects);
         CellIds.ValidateLandblockId(landblockId, nameof(landblockId));
         ArgumentNullException.ThrowIfNull(terrain);
         ArgumentNullException.ThrowIfNull(cells);
@@ -194,7 +319,75 @@ public sealed class PhysicsEngine
             }
         }
 
-        _registry.Set(new LandblockEntry(CellIds.LandblockX(landblockId), CellIds.LandblockY(landblockId), terrain, sorted));
+        ObjectSurface[] outdoor = objects.Count == 0 ? [] : PlaceObjects(prefix, sorted, objects);
+        _registry.Set(new LandblockEntry(CellIds.LandblockX(landblockId), CellIds.LandblockY(landblockId), terrain, sorted, outdoor));
+    }
+
+    /// <summary>
+    /// Puts each indoor object into (a copy of) its cell in <paramref name="sorted"/>, marks the cells of
+    /// buildings with shells, and returns the outdoor objects.
+    /// </summary>
+    private static ObjectSurface[] PlaceObjects(uint prefix, CellSurface[] sorted, IReadOnlyList<ObjectSurface> objects)
+    {
+        var outdoor = new List<ObjectSurface>();
+        var inCell = new List<ObjectSurface>?[sorted.Length];
+        var shelled = new bool[sorted.Length];
+        for (int i = 0; i < objects.Count; i++)
+        {
+            ObjectSurface o = objects[i] ?? throw new ArgumentNullException(nameof(objects), $"landblock 0x{prefix | 0xFFFF:X8}: objects[{i}] is null.");
+            if (o.CellId == 0)
+            {
+                outdoor.Add(o);
+                foreach (uint door in o.DoorCellIds)
+                {
+                    Shell(IndexOf(door, $"object 0x{o.ObjectId:X8} (objects[{i}]): its door cell"));
+                }
+            }
+            else
+            {
+                (inCell[IndexOf(o.CellId, $"object 0x{o.ObjectId:X8} (objects[{i}]): its cell")] ??= []).Add(o);
+            }
+        }
+
+        for (int c = 0; c < sorted.Length; c++)
+        {
+            if (inCell[c] is not null || shelled[c])
+            {
+                sorted[c] = sorted[c].WithObjects(inCell[c]?.ToArray() ?? [], shelled[c]);
+            }
+        }
+
+        return [.. outdoor];
+
+        int IndexOf(uint cellId, string what)
+        {
+            int index = Array.FindIndex(sorted, c => c.CellId == cellId);
+            return index >= 0 ? index : throw new ArgumentException(
+                $"landblock 0x{prefix | 0xFFFF:X8}: {what} 0x{cellId:X8} is not among the cells given.", nameof(objects));
+        }
+
+        void Shell(int door)
+        {
+            // The building: every cell reached from its door through portals between cells.
+            var open = new Stack<int>([door]);
+            while (open.TryPop(out int c))
+            {
+                if (shelled[c])
+                {
+                    continue;
+                }
+
+                shelled[c] = true;
+                foreach (CellPortalInfo portal in sorted[c].Portals)
+                {
+                    int next = Array.FindIndex(sorted, s => s.CellId == portal.TargetCellId);
+                    if (next >= 0 && !shelled[next])
+                    {
+                        open.Push(next);
+                    }
+                }
+            }
+        }
     }
 
     /// <summary>Remove all surfaces for an unloaded landblock.</summary>

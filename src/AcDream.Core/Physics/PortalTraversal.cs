@@ -57,7 +57,7 @@ internal sealed class PortalTraversal(LandblockRegistry registry)
             return through.Kind == Arrival.Nothing ? Landing.Blocked(ResolveOutcome.Wall) : through;
         }
 
-        if (cell.TrySampleFloor(q.P1.X, q.P1.Y, q.Z, out float floorZ))
+        if (cell.TrySampleGround(q.P1.X, q.P1.Y, q.Z, q.StepUp, out float floorZ))
         {
             return Landing.OnFloor(hop.Cell, floorZ);
         }
@@ -91,7 +91,7 @@ internal sealed class PortalTraversal(LandblockRegistry registry)
             float bestZ = 0f, bestDistance = float.MaxValue;
             foreach (int target in targets)
             {
-                if (target >= 0 && entry.Cells[target].TrySampleFloor(q.P1.X, q.P1.Y, q.Z, out float neighbourZ)
+                if (target >= 0 && entry.Cells[target].TrySampleGround(q.P1.X, q.P1.Y, q.Z, q.StepUp, out float neighbourZ)
                     && MathF.Abs(neighbourZ - q.Z) < bestDistance)
                 {
                     best = target;

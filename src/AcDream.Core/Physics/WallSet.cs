@@ -10,7 +10,10 @@ namespace AcDream.Core.Physics;
 /// </summary>
 internal ref struct WallSet
 {
-    private readonly Span<int> _cells; // slot << 16 | cell index
+    /// <summary>Marks an entry that is an outdoor object of its landblock (<see cref="LandblockEntry.OutdoorObjects"/>), not a cell.</summary>
+    public const int ObjectFlag = 0x8000;
+
+    private readonly Span<int> _cells; // slot << 16 | cell index, or | ObjectFlag | outdoor object index
     private LandblockEntry? _slot0, _slot1, _slot2, _slot3;
     private Vector2 _offset0, _offset1, _offset2, _offset3;
     private int _slots;
@@ -99,30 +102,48 @@ internal ref struct WallSet
         {
             (int slot, int index) = At(i);
             (LandblockEntry entry, Vector2 offset) = Slot(slot);
-            CellWalls walls = entry.Cells[index].Walls;
             Vector2 cellLo = lo - offset, cellHi = hi - offset;
-            if (walls.Min.X > cellHi.X || walls.Max.X < cellLo.X || walls.Min.Y > cellHi.Y || walls.Max.Y < cellLo.Y)
+            if ((index & ObjectFlag) != 0)
+            {
+                SweepWalls(entry.OutdoorObjects[index & ~ObjectFlag].Walls, offset, cellLo, cellHi, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
+                continue;
+            }
+
+            CellSurface cell = entry.Cells[index];
+            SweepWalls(cell.Walls, offset, cellLo, cellHi, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
+            foreach (ObjectSurface o in cell.Objects)
+            {
+                SweepWalls(o.Walls, offset, cellLo, cellHi, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
+            }
+        }
+    }
+
+    /// <summary>One cell's or object's walls (landblock frame <paramref name="offset"/> from the move's) in the sweep's box and band.</summary>
+    private static void SweepWalls(
+        CellWalls walls, Vector2 offset, Vector2 cellLo, Vector2 cellHi, Vector2 p, Vector2 d, float radius, float graze, float zLow, float zHigh,
+        ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
+    {
+        if (walls.Min.X > cellHi.X || walls.Max.X < cellLo.X || walls.Min.Y > cellHi.Y || walls.Max.Y < cellLo.Y)
+        {
+            return;
+        }
+
+        ReadOnlySpan<Vector3> vertices = walls.Vertices;
+        foreach (ref readonly WallPolygon wall in walls.Polygons.AsSpan())
+        {
+            if (wall.ZMax <= zLow || wall.ZMin >= zHigh
+                || wall.Min.X > cellHi.X || wall.Max.X < cellLo.X || wall.Min.Y > cellHi.Y || wall.Max.Y < cellLo.Y)
             {
                 continue;
             }
 
-            ReadOnlySpan<Vector3> vertices = walls.Vertices;
-            foreach (ref readonly WallPolygon wall in walls.Polygons.AsSpan())
+            if (wall.IsUpright)
             {
-                if (wall.ZMax <= zLow || wall.ZMin >= zHigh
-                    || wall.Min.X > cellHi.X || wall.Max.X < cellLo.X || wall.Min.Y > cellHi.Y || wall.Max.Y < cellLo.Y)
-                {
-                    continue;
-                }
-
-                if (wall.IsUpright)
-                {
-                    BodySweep.SweepSegment(p, d, wall.A + offset, wall.B + offset, radius, graze, ref t, ref normal, ref depth, ref outward);
-                }
-                else
-                {
-                    BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
-                }
+                BodySweep.SweepSegment(p, d, wall.A + offset, wall.B + offset, radius + wall.Radius, graze, ref t, ref normal, ref depth, ref outward);
+            }
+            else
+            {
+                BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
             }
         }
     }

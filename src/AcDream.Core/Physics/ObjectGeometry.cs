@@ -1,0 +1,221 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The two questions a point mover asks of the objects near it, allocation-free: which object floor it
+/// stands on, and whether its move crosses an object's wall. Landblock-local metres throughout.
+/// </summary>
+internal static class ObjectGeometry
+{
+    /// <summary>
+    /// Raises <paramref name="z"/> to the highest floor of <paramref name="objects"/> under (x, y) that is
+    /// no higher than <paramref name="ceilingZ"/>, when that is above <paramref name="z"/> (or when
+    /// <paramref name="found"/> is false: there is no floor yet). Returns whether it raised it; then
+    /// <paramref name="objectIndex"/> is the object's index.
+    /// </summary>
+    public static bool Raise(ReadOnlySpan<ObjectSurface> objects, float x, float y, float ceilingZ, bool found, ref float z, out int objectIndex)
+    {
+        objectIndex = -1;
+        for (int i = 0; i < objects.Length; i++)
+        {
+            if (objects[i].TryFloorBelow(x, y, ceilingZ, out float floor) && (!found || floor > z))
+            {
+                (z, found, objectIndex) = (floor, true, i);
+            }
+        }
+
+        return objectIndex >= 0;
+    }
+
+    /// <inheritdoc cref="Raise(ReadOnlySpan{ObjectSurface}, float, float, float, bool, ref float, out int)"/>
+    public static bool Raise(ReadOnlySpan<ObjectSurface> objects, float x, float y, float ceilingZ, bool found, ref float z) =>
+        Raise(objects, x, y, ceilingZ, found, ref z, out _);
+
+    /// <summary>
+    /// <see cref="Raise(ReadOnlySpan{ObjectSurface}, float, float, float, bool, ref float, out int)"/> over
+    /// the outdoor objects a landblock lists over the outdoor cell of (x, y).
+    /// </summary>
+    public static bool RaiseOutdoors(LandblockEntry entry, float x, float y, float ceilingZ, bool found, ref float z, out int objectIndex)
+    {
+        objectIndex = -1;
+        foreach (int i in entry.ObjectBuckets[CellIds.OutdoorCellNumberUnchecked(x, y) - 1])
+        {
+            if (entry.OutdoorObjects[i].TryFloorBelow(x, y, ceilingZ, out float floor) && (!found || floor > z))
+            {
+                (z, found, objectIndex) = (floor, true, i);
+            }
+        }
+
+        return objectIndex >= 0;
+    }
+
+    /// <summary>
+    /// The first wall of <paramref name="objects"/> that the move <paramref name="p0"/> → <paramref name="p1"/>
+    /// crosses at height <paramref name="h"/> (a point mover's feet plus its step: lower walls are steps),
+    /// from either side: fraction <paramref name="t"/> along the move (only crossings before the
+    /// <paramref name="t"/> given count), the wall's horizontal unit normal facing the mover, and the object.
+    /// A move that starts exactly on a wall's line may leave it; one that ends on it has crossed.
+    /// </summary>
+    public static void FirstCrossing(ReadOnlySpan<ObjectSurface> objects, Vector2 p0, Vector2 p1, float h, ref float t, ref Vector3 normal, ref int objectIndex)
+    {
+        Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
+        for (int i = 0; i < objects.Length; i++)
+        {
+            ObjectSurface o = objects[i];
+            if (o.BoundsMin.X > hi.X || o.BoundsMax.X < lo.X || o.BoundsMin.Y > hi.Y || o.BoundsMax.Y < lo.Y
+                || !(o.BoundsMin.Z < h && o.BoundsMax.Z > h))
+            {
+                continue;
+            }
+
+            if (FirstCrossing(o.Walls, p0, p1, lo, hi, h, ref t, ref normal))
+            {
+                objectIndex = i;
+            }
+        }
+    }
+
+    /// <summary>
+    /// <see cref="FirstCrossing(ReadOnlySpan{ObjectSurface}, Vector2, Vector2, float, ref float, ref Vector3, ref int)"/>
+    /// over the outdoor objects a landblock lists over the outdoor cells the move's box covers.
+    /// </summary>
+    public static void FirstCrossingOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1, float h, ref float t, ref Vector3 normal, ref int objectIndex)
+    {
+        Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
+        int x0 = CellIds.OutdoorColumn(lo.X), x1 = CellIds.OutdoorColumn(hi.X);
+        int y0 = CellIds.OutdoorColumn(lo.Y), y1 = CellIds.OutdoorColumn(hi.Y);
+        for (int cx = x0; cx <= x1; cx++)
+        {
+            for (int cy = y0; cy <= y1; cy++)
+            {
+                foreach (int i in entry.ObjectBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
+                {
+                    ObjectSurface o = entry.OutdoorObjects[i];
+                    if (o.BoundsMin.X > hi.X || o.BoundsMax.X < lo.X || o.BoundsMin.Y > hi.Y || o.BoundsMax.Y < lo.Y
+                        || !(o.BoundsMin.Z < h && o.BoundsMax.Z > h))
+                    {
+                        continue;
+                    }
+
+                    if (FirstCrossing(o.Walls, p0, p1, lo, hi, h, ref t, ref normal))
+                    {
+                        objectIndex = i;
+                    }
+                }
+            }
+        }
+    }
+
+    private static bool FirstCrossing(CellWalls walls, Vector2 p0, Vector2 p1, Vector2 lo, Vector2 hi, float h, ref float t, ref Vector3 normal)
+    {
+        bool hit = false;
+        ReadOnlySpan<Vector3> vertices = walls.Vertices;
+        foreach (ref readonly WallPolygon w in walls.Polygons.AsSpan())
+        {
+            if (!(w.ZMin < h && w.ZMax > h) || w.Min.X > hi.X || w.Max.X < lo.X || w.Min.Y > hi.Y || w.Max.Y < lo.Y)
+            {
+                continue;
+            }
+
+            if (w.Radius > 0f)
+            {
+                hit |= CrossCircle(p0, p1, w.A, w.Radius, ref t, ref normal);
+            }
+            else if (w.IsUpright)
+            {
+                hit |= CrossSegment(p0, p1, w.A, w.B, ref t, ref normal);
+            }
+            else if (Cut(vertices.Slice(w.First, w.Count), h, out Vector2 a, out Vector2 b))
+            {
+                hit |= CrossSegment(p0, p1, a, b, ref t, ref normal);
+            }
+        }
+
+        return hit;
+    }
+
+    /// <summary>Where a convex polygon meets the plane z = <paramref name="h"/>: the chord between its extreme crossing points.</summary>
+    private static bool Cut(ReadOnlySpan<Vector3> v, float h, out Vector2 a, out Vector2 b)
+    {
+        (a, b) = (default, default);
+        int n = 0;
+        for (int i = 0; i < v.Length; i++)
+        {
+            Vector3 p = v[i], q = v[(i + 1) % v.Length];
+            if ((p.Z < h) == (q.Z < h))
+            {
+                continue;
+            }
+
+            float s = (h - p.Z) / (q.Z - p.Z);
+            var point = new Vector2(p.X + ((q.X - p.X) * s), p.Y + ((q.Y - p.Y) * s));
+            if (n == 0)
+            {
+                a = point;
+            }
+            else if (n == 1 || Vector2.DistanceSquared(a, point) > Vector2.DistanceSquared(a, b))
+            {
+                b = point;
+            }
+
+            n++;
+        }
+
+        return n >= 2 && a != b;
+    }
+
+    /// <summary>The move crosses segment a–b (from either side, onto or through its line, within its ends) before <paramref name="t"/>.</summary>
+    private static bool CrossSegment(Vector2 p0, Vector2 p1, Vector2 a, Vector2 b, ref float t, ref Vector3 normal)
+    {
+        Vector2 ab = b - a;
+        float s0 = Cross(ab, p0 - a), s1 = Cross(ab, p1 - a);
+        if (s0 == 0f || (s0 > 0f && s1 > 0f) || (s0 < 0f && s1 < 0f))
+        {
+            return false; // starts on the line (may leave it) or stays on one side
+        }
+
+        float at = s0 / (s0 - s1);
+        Vector2 point = p0 + ((p1 - p0) * at);
+        float u = Vector2.Dot(point - a, ab) / ab.LengthSquared();
+        if (!(u >= 0f && u <= 1f) || !(at < t))
+        {
+            return false;
+        }
+
+        Vector2 n = Vector2.Normalize(s0 > 0f ? new Vector2(-ab.Y, ab.X) : new Vector2(ab.Y, -ab.X));
+        (t, normal) = (at, new Vector3(n, 0f));
+        return true;
+    }
+
+    /// <summary>The move enters the circle (centre <paramref name="c"/>, radius <paramref name="r"/>) before <paramref name="t"/>; a move starting inside may leave.</summary>
+    private static bool CrossCircle(Vector2 p0, Vector2 p1, Vector2 c, float r, ref float t, ref Vector3 normal)
+    {
+        Vector2 d = p1 - p0, f = p0 - c;
+        float a = d.LengthSquared(), b = Vector2.Dot(f, d), k = f.LengthSquared() - (r * r);
+        if (k <= 0f || b >= 0f || a == 0f)
+        {
+            return false; // starts inside (or on) the circle, or moves away from it
+        }
+
+        float disc = (b * b) - (a * k);
+        if (disc < 0f)
+        {
+            return false;
+        }
+
+        float at = (-b - MathF.Sqrt(disc)) / a;
+        if (!(at <= 1f) || !(at < t))
+        {
+            return false;
+        }
+
+        at = MathF.Max(at, 0f);
+        Vector2 n = f + (d * at);
+        float length = n.Length();
+        (t, normal) = (at, length > 0f ? new Vector3(n / length, 0f) : new Vector3(-d / MathF.Sqrt(a), 0f));
+        return true;
+    }
+
+    private static float Cross(Vector2 u, Vector2 v) => (u.X * v.Y) - (u.Y * v.X);
+}
