@@ -84,3 +84,30 @@ internal static class HoltburgCells
             .ToDictionary(cell => cell.CellId);
     }
 }
+
+/// <summary>The real objects of <c>Fixtures/objects</c> and their recorded placements.</summary>
+internal static class RealObjects
+{
+    private static readonly Lazy<IReadOnlyDictionary<uint, GfxObj>> All = new(Load);
+
+    /// <summary>The fixture GfxObjs by id (shared: do not change them).</summary>
+    public static IReadOnlyDictionary<uint, GfxObj> GfxObjs => All.Value;
+
+    public static IReadOnlyDictionary<uint, Setup> NoSetups { get; } = new Dictionary<uint, Setup>();
+
+    /// <summary>Landblock 0xA9B4's buildings (the cottage's shell and the small building) as surfaces.</summary>
+    public static List<ObjectSurface> HoltburgBuildings() =>
+        ObjectSurface.FromLandblock(TestData.Holtburg, ObjectPlacements.HoltburgInfo(), [], GfxObjs, NoSetups);
+
+    /// <summary>The eight stair pieces of landblock 0xF682.</summary>
+    public static List<ObjectSurface> Staircase() =>
+        ObjectSurface.FromLandblock(ObjectPlacements.StaircaseLandblock, ObjectPlacements.StaircaseInfo(), [], GfxObjs, NoSetups);
+
+    private static Dictionary<uint, GfxObj> Load()
+    {
+        string folder = Path.Combine(AppContext.BaseDirectory, "Fixtures", "objects");
+        return Directory.GetFiles(folder, "0x*.json")
+            .Select(path => ObjectFixtureReader.Read(File.ReadAllText(path), path))
+            .ToDictionary(o => o.Id);
+    }
+}

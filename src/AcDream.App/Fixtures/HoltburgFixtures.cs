@@ -27,4 +27,25 @@ internal static class HoltburgFixtures
         cells.Sort((a, b) => a.CellId.CompareTo(b.CellId));
         return cells;
     }
+
+    /// <summary>Reads every embedded object fixture (<c>Fixtures/objects/0x*.json</c>), by GfxObj id. Each call returns new objects.</summary>
+    public static Dictionary<uint, Core.Dat.GfxObj> ReadObjects()
+    {
+        Assembly assembly = typeof(HoltburgFixtures).Assembly;
+        var objects = new Dictionary<uint, Core.Dat.GfxObj>();
+        foreach (string name in assembly.GetManifestResourceNames())
+        {
+            if (!name.StartsWith("objects/0x", StringComparison.Ordinal))
+            {
+                continue;
+            }
+
+            using Stream stream = assembly.GetManifestResourceStream(name)!;
+            using var reader = new StreamReader(stream);
+            Core.Dat.GfxObj gfxObj = ObjectFixtureReader.Read(reader.ReadToEnd(), name);
+            objects.Add(gfxObj.Id, gfxObj);
+        }
+
+        return objects;
+    }
 }

@@ -1,0 +1,62 @@
+using System.Globalization;
+using System.Numerics;
+using System.Text.Json;
+using AcDream.Core.Dat;
+
+namespace AcDream.App.Fixtures;
+
+/// <summary>
+/// Reads the object fixtures (one GfxObj per JSON file, the format of <c>Fixtures/objects/README.md</c>)
+/// into the dat model, 1:1: the physics polygons become <see cref="GfxObj.PhysicsPolygons"/> (keyed by
+/// their ids) over one shared vertex array, the bounding sphere <see cref="GfxObj.BoundingSphere"/>.
+/// The stored normals and plane distances are not read: the engine takes a polygon's normal from its
+/// winding, which the fixtures' README checked against them.
+/// </summary>
+public static class ObjectFixtureReader
+{
+    /// <summary>Parses one fixture file's text; <paramref name="source"/> names it in errors.</summary>
+    /// <exception cref="InvalidDataException">The text is not a fixture object; the message names the source and field.</exception>
+    public static GfxObj Read(string json, string source)
+    {
+        try
+        {
+            using JsonDocument document = JsonDocument.Parse(json);
+            JsonElement root = document.RootElement;
+            var gfxObj = new GfxObj
+            {
+                Id = uint.Parse(root.GetProperty("gfxObjId").GetString()!.AsSpan(2), NumberStyles.HexNumber, CultureInfo.InvariantCulture),
+                Flags = GfxObjFlags.HasPhysics,
+            };
+            JsonElement sphere = root.GetProperty("boundingSphere");
+            gfxObj.BoundingSphere = new Sphere { Origin = ReadVector(sphere.GetProperty("origin")), Radius = sphere.GetProperty("radius").GetSingle() };
+            var vertexIds = new Dictionary<Vector3, short>();
+            foreach (JsonElement element in root.GetProperty("physicsPolygons").EnumerateArray())
+            {
+                var polygon = new Polygon { SidesType = (CullMode)element.GetProperty("sidesType").GetInt32() };
+                foreach (JsonElement vertex in element.GetProperty("vertices").EnumerateArray())
+                {
+                    Vector3 position = ReadVector(vertex);
+                    if (!vertexIds.TryGetValue(position, out short id))
+                    {
+                        id = (short)vertexIds.Count;
+                        vertexIds.Add(position, id);
+                        gfxObj.VertexArray.Vertices.Add((ushort)id, new SWVertex { Origin = position });
+                    }
+
+                    polygon.VertexIds.Add(id);
+                }
+
+                gfxObj.PhysicsPolygons.Add(element.GetProperty("id").GetUInt16(), polygon);
+            }
+
+            return gfxObj;
+        }
+        catch (Exception e) when (e is JsonException or KeyNotFoundException or InvalidOperationException or FormatException or OverflowException or IndexOutOfRangeException or NullReferenceException or ArgumentException)
+        {
+            throw new InvalidDataException($"{source}: not a fixture object ({e.Message})", e);
+        }
+    }
+
+    private static Vector3 ReadVector(JsonElement array) =>
+        new(array[0].GetSingle(), array[1].GetSingle(), array[2].GetSingle());
+}
