@@ -44,6 +44,7 @@ public sealed class GameWindow : IDisposable
     private readonly HashSet<uint> _window = [];
     private readonly HashSet<uint> _loaded = [];
     private readonly Dictionary<uint, long> _retryAtFrame = [];
+    private readonly Dictionary<uint, int> _objectCounts = [];
     private readonly Thread _loader;
     private long _frame;
 
@@ -262,9 +263,12 @@ public sealed class GameWindow : IDisposable
 
     /// <summary>
     /// Registers a loaded landblock: builds its <see cref="TerrainSurface"/> (the game's triangles,
-    /// from the landblock id) and one <see cref="CellSurface"/> per cell whose environment and cell
-    /// struct resolve, and calls <c>PhysicsEngine.AddLandblock</c>. A cell that cannot be
-    /// built is skipped with a warning naming it and the reason.
+    /// from the landblock id), one <see cref="CellSurface"/> per cell whose environment and cell
+    /// struct resolve, and one <see cref="ObjectSurface"/> per object of its <see cref="LoadedLandblock.Info"/>
+    /// and of its registered cells' <see cref="EnvCell.StaticObjects"/> (<see cref="ObjectSurface.FromLandblock"/>,
+    /// object by object), and calls <c>PhysicsEngine.AddLandblock</c> with them. A cell or an object
+    /// that cannot be built is skipped with a warning naming it and the reason; an object standing
+    /// in a skipped cell is skipped with it.
     /// </summary>
     /// <remarks>
     /// The name is the spec's (Phase B.3 hooks the engine into <c>ApplyLoadedTerrainLocked</c>). Here
@@ -309,15 +313,37 @@ public sealed class GameWindow : IDisposable
             }
         }
 
+        List<ObjectSurface> objects = BuildObjects(id, loaded, ids);
         try
         {
-            Physics.AddLandblock(id, terrain, cells);
+            Physics.AddLandblock(id, terrain, cells, objects);
+        }
+        catch (ArgumentException e) when (objects.Count > 0)
+        {
+            // The objects were checked one by one; what the engine still refuses is their combination.
+            _log($"landblock 0x{id:X8}: its {objects.Count} objects skipped: {e.Message}");
+            objects.Clear();
         }
         catch (ArgumentException e)
         {
             error = e.Message;
             return false;
         }
+
+        if (objects.Count == 0)
+        {
+            try
+            {
+                Physics.AddLandblock(id, terrain, cells);
+            }
+            catch (ArgumentException e)
+            {
+                error = e.Message;
+                return false;
+            }
+        }
+
+        _objectCounts[id] = objects.Count;
 
         if (_loaded.Add(id))
         {
@@ -327,15 +353,94 @@ public sealed class GameWindow : IDisposable
         return true;
     }
 
+    /// <summary>The number of objects registered with each loaded landblock (<c>0xXXYYFFFF</c>), as of its last registration. Frame thread only.</summary>
+    public IReadOnlyDictionary<uint, int> ObjectCounts => _objectCounts;
+
     /// <summary>The unload path: removes a landblock from the engine (nothing happens if it is not registered).</summary>
     internal void UnloadLandblockLocked(uint landblockId)
     {
         uint id = CellIds.LandblockOf(landblockId);
         Physics.RemoveLandblock(id);
+        _objectCounts.Remove(id);
         if (_loaded.Remove(id))
         {
             LandblockUnloaded?.Invoke(id);
         }
+    }
+
+    /// <summary>
+    /// The landblock's objects, built one by one (each through <see cref="ObjectSurface.FromLandblock"/>
+    /// with that object alone) so a bad one is reported and skipped, as a bad cell is: the
+    /// <see cref="LandBlockInfo"/>'s objects and buildings (a building whose door cell is not
+    /// registered is skipped), then the static objects of each registered cell.
+    /// </summary>
+    private List<ObjectSurface> BuildObjects(uint landblockId, LoadedLandblock loaded, HashSet<uint> cellIds)
+    {
+        var result = new List<ObjectSurface>();
+        IReadOnlyDictionary<uint, GfxObj> gfxObjs = loaded.GfxObjs ?? new Dictionary<uint, GfxObj>();
+        IReadOnlyDictionary<uint, Setup> setups = loaded.Setups ?? new Dictionary<uint, Setup>();
+        void Build(string what, LandBlockInfo? info, EnvCell? cell)
+        {
+            try
+            {
+                result.AddRange(ObjectSurface.FromLandblock(landblockId, info, cell is null ? [] : [cell], gfxObjs, setups));
+            }
+            catch (ArgumentException e)
+            {
+                _log($"landblock 0x{landblockId:X8}: {what} skipped: {e.Message}");
+            }
+        }
+
+        if (loaded.Info is LandBlockInfo info)
+        {
+            if (info.Id != 0 && CellIds.LandblockOf(info.Id) != landblockId)
+            {
+                _log($"landblock 0x{landblockId:X8}: its object list 0x{info.Id:X8} skipped: it belongs to another landblock");
+            }
+            else
+            {
+                for (int i = 0; i < (info.Objects?.Count ?? 0); i++)
+                {
+                    Stab stab = info.Objects![i];
+                    Build($"object {i} (0x{stab?.Id ?? 0:X8})", new LandBlockInfo { Id = info.Id, Objects = [stab!] }, null);
+                }
+
+                for (int i = 0; i < (info.Buildings?.Count ?? 0); i++)
+                {
+                    BuildingInfo building = info.Buildings![i];
+                    string what = $"building {i} (0x{building?.ModelId ?? 0:X8})";
+                    uint missing = (building?.Portals ?? []).Where(p => p is not null).Select(p => (landblockId & 0xFFFF0000u) | p.OtherCellId).FirstOrDefault(door => !cellIds.Contains(door));
+                    if (missing != 0)
+                    {
+                        _log($"landblock 0x{landblockId:X8}: {what} skipped: its door cell 0x{missing:X8} is not registered");
+                        continue;
+                    }
+
+                    Build(what, new LandBlockInfo { Id = info.Id, Buildings = [building!] }, null);
+                }
+            }
+        }
+
+        foreach (EnvCell? envCell in loaded.EnvCells ?? [])
+        {
+            if (envCell?.StaticObjects is not { Count: > 0 } statics)
+            {
+                continue;
+            }
+
+            if (!cellIds.Contains(envCell.Id))
+            {
+                _log($"landblock 0x{landblockId:X8}: the {statics.Count} object(s) of cell 0x{envCell.Id:X8} skipped with their cell");
+                continue;
+            }
+
+            for (int i = 0; i < statics.Count; i++)
+            {
+                Build($"object {i} (0x{statics[i]?.Id ?? 0:X8}) of cell 0x{envCell.Id:X8}", null, new EnvCell { Id = envCell.Id, StaticObjects = [statics[i]] });
+            }
+        }
+
+        return result;
     }
 
     private static string? CellProblem(uint landblockId, EnvCell? envCell, IReadOnlyDictionary<uint, Environment>? environments, HashSet<uint> ids, out CellSurface? cell)

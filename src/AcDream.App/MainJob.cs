@@ -97,7 +97,7 @@ internal static class MainJob
             return BadInput;
         }
 
-        var world = new HoltburgWorld();
+        HoltburgWorld world = scene.CreateWorld();
         WalkRecord record = SceneRunner.Run(scene, world, frames);
 
         string svgPath = Path.GetFullPath(Path.Combine(outDir ?? "out", FileName(scene.Name) + ".svg"));

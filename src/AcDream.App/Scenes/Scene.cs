@@ -11,4 +11,11 @@ namespace AcDream.App.Scenes;
 /// <param name="Legs">The legs, run in order.</param>
 /// <param name="Notes">Lines printed under the summary.</param>
 /// <param name="Effects">The engine's opt-in effects the walk uses (<c>"effects"</c>; default none).</param>
-internal sealed record Scene(string Name, string Source, Vector2 Start, float StartHeadingDegrees, IReadOnlyList<SceneLeg> Legs, IReadOnlyList<string> Notes, MovementOptions Effects);
+/// <param name="World">The world walked (<c>"world"</c>, <see cref="World.HoltburgWorld.Worlds"/>; default Holtburg).</param>
+/// <param name="Objects">The object sets registered (<c>"objects"</c>, <see cref="World.HoltburgWorld.ObjectSets"/>; default none).</param>
+internal sealed record Scene(string Name, string Source, Vector2 Start, float StartHeadingDegrees, IReadOnlyList<SceneLeg> Legs, IReadOnlyList<string> Notes, MovementOptions Effects,
+    string World = World.HoltburgWorld.Worlds.Holtburg, IReadOnlyList<string>? Objects = null)
+{
+    /// <summary>The world this scene walks, with its objects.</summary>
+    public World.HoltburgWorld CreateWorld() => new(World, Objects ?? []);
+}

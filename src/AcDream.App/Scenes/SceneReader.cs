@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using System.Reflection;
 using System.Text.Json;
+using AcDream.App.World;
 using AcDream.Core.Physics;
 
 namespace AcDream.App.Scenes;
@@ -24,7 +25,7 @@ internal static class SceneReader
     /// <summary>How far from 0xA9B4's corner a start may be, metres: the 3 × 3 landblocks around Holtburg and one more ring (the world is bigger, the walk is not).</summary>
     public const float MaxStartDistance = 2 * PhysicsConstants.LandblockSize;
 
-    private static readonly string[] SceneFields = ["name", "start", "legs", "notes", "effects"];
+    private static readonly string[] SceneFields = ["name", "world", "objects", "start", "legs", "notes", "effects"];
     /// <summary>Largest body radius a scene may give, metres.</summary>
     public const float MaxBodyRadius = 10f;
 
@@ -104,7 +105,7 @@ internal static class SceneReader
             Vector2 position = context.RequirePoint(start, "position", "start.position");
             if (MathF.Abs(position.X - 96f) > MaxStartDistance || MathF.Abs(position.Y - 96f) > MaxStartDistance)
             {
-                throw context.Error("start.position", start.GetProperty("position"), $"must be within {MaxStartDistance} m of Holtburg's centre (96, 96)");
+                throw context.Error("start.position", start.GetProperty("position"), $"must be within {MaxStartDistance} m of the centre landblock's middle (96, 96)");
             }
 
             float heading = context.OptionalNumber(start, "heading", "start.heading", 0f, -360f, 360f);
@@ -139,7 +140,43 @@ internal static class SceneReader
             }
 
             MovementOptions effects = root.TryGetProperty("effects", out JsonElement effectsElement) ? ReadEffects(context, effectsElement) : default;
-            return new Scene(name, source, position, heading, legs, notes, effects);
+            string world = HoltburgWorld.Worlds.Holtburg;
+            if (root.TryGetProperty("world", out JsonElement worldElement))
+            {
+                world = worldElement.ValueKind == JsonValueKind.String && worldElement.GetString() is HoltburgWorld.Worlds.Holtburg or HoltburgWorld.Worlds.Staircase
+                    ? worldElement.GetString()!
+                    : throw context.Error("world", worldElement, $"must be \"{HoltburgWorld.Worlds.Holtburg}\" or \"{HoltburgWorld.Worlds.Staircase}\"");
+            }
+
+            var objects = new List<string>();
+            if (root.TryGetProperty("objects", out JsonElement objectsElement))
+            {
+                if (objectsElement.ValueKind != JsonValueKind.Array)
+                {
+                    throw context.Error("objects", objectsElement, "must be an array of object set names");
+                }
+
+                int n = 0;
+                foreach (JsonElement set in objectsElement.EnumerateArray())
+                {
+                    string? text = set.ValueKind == JsonValueKind.String ? set.GetString() : null;
+                    if (text is null || !HoltburgWorld.ObjectSets.TryGetValue(text, out string? home) || home != world)
+                    {
+                        string allowed = string.Join(", ", HoltburgWorld.ObjectSets.Where(s => s.Value == world).Select(s => $"\"{s.Key}\""));
+                        throw context.Error($"objects[{n}]", set, $"must be one of the {world} world's object sets ({allowed})");
+                    }
+
+                    if (objects.Contains(text))
+                    {
+                        throw context.Error($"objects[{n}]", set, "is listed twice");
+                    }
+
+                    objects.Add(text);
+                    n++;
+                }
+            }
+
+            return new Scene(name, source, position, heading, legs, notes, effects, world, objects);
         }
     }
 

@@ -22,9 +22,21 @@ internal static class SceneRunner
     /// <summary>Longest wait for one frame's landblock loads before the run gives up: 30 s.</summary>
     private static readonly TimeSpan LoadTimeout = TimeSpan.FromSeconds(30);
 
+    /// <summary>How far beyond the body's radius (or the point) <see cref="PhysicsEngine.ObjectWallNear"/> looks for the object whose wall a frame met, metres: a little more than a run's frame (0.13 m).</summary>
+    public const float WallReach = 0.25f;
+
+    /// <summary>Runs <paramref name="scene"/> in its own world (<see cref="Scene.CreateWorld"/>).</summary>
+    public static WalkRecord Run(Scene scene, int? maxFrames = null) => Run(scene, scene.CreateWorld(), maxFrames);
+
     /// <summary>Runs <paramref name="scene"/>; stops after <paramref name="maxFrames"/> frames if given.</summary>
+    /// <exception cref="ArgumentException"><paramref name="world"/> is not the scene's world with its objects.</exception>
     public static WalkRecord Run(Scene scene, HoltburgWorld world, int? maxFrames = null)
     {
+        if (!world.Is(scene.World, scene.Objects ?? []))
+        {
+            throw new ArgumentException($"the scene walks the {scene.World} world with objects [{string.Join(", ", scene.Objects ?? [])}]; this world is {world.World} with [{string.Join(", ", world.Objects)}].", nameof(world));
+        }
+
         const float dt = 1f / FramesPerSecond;
         var warnings = new List<string>();
         var streaming = new List<StreamingEvent>();
@@ -33,8 +45,8 @@ internal static class SceneRunner
         var drops = new List<Drop>();
         int frame = 0;
 
-        using var window = new GameWindow(world, world.HeightTable, HoltburgWorld.Holtburg, warnings.Add);
-        window.LandblockLoaded += id => streaming.Add(new StreamingEvent(frame, id, true));
+        using var window = new GameWindow(world, world.HeightTable, world.Center, warnings.Add);
+        window.LandblockLoaded += id => streaming.Add(new StreamingEvent(frame, id, true, window.ObjectCounts.GetValueOrDefault(id)));
         window.LandblockUnloaded += id => streaming.Add(new StreamingEvent(frame, id, false));
         PhysicsEngine engine = window.Physics;
 
@@ -111,7 +123,8 @@ internal static class SceneRunner
                     slides.Add(normal);
                 }
 
-                var sample = new FrameSample(frame, mode.Position, mode.CellId, mode.IsOnGround, moved.LastRefusal, slide);
+                var sample = new FrameSample(frame, mode.Position, mode.CellId, mode.IsOnGround, moved.LastRefusal, slide,
+                    FloorObject(engine, mode), WallObject(engine, mode, moved, slide, scene.Effects));
                 if (before.IsOnGround && sample.IsOnGround && before.Position.Z - sample.Position.Z > PlayerMovementMode.StepUpHeight)
                 {
                     drops.Add(new Drop(frame, before.Position.Z, before.CellId, sample.Position.Z, sample.CellId));
@@ -142,6 +155,20 @@ internal static class SceneRunner
         }
 
         return engine.Resolve(start with { Z = groundZ }, 0u, Vector3.Zero, PlayerMovementMode.StepUpHeight);
+    }
+
+    /// <summary>The object whose floor the mover stands on (the engine's answer for its feet and step), or 0.</summary>
+    private static uint FloorObject(PhysicsEngine engine, PlayerMovementMode mode) =>
+        mode.IsOnGround && engine.TryGetGround(mode.Position, mode.CellId, PlayerMovementMode.StepUpHeight, out _, out _, out uint objectId) ? objectId : 0;
+
+    /// <summary>
+    /// For a frame the engine answered Wall, OuterWall or Slid along a wall: the object with a wall
+    /// nearest the mover within its body's radius and <see cref="WallReach"/> (0 when none: a cell's wall).
+    /// </summary>
+    private static uint WallObject(PhysicsEngine engine, PlayerMovementMode mode, MovementFrame moved, Vector3? slide, MovementOptions effects)
+    {
+        bool wall = moved.LastRefusal is ResolveOutcome.Wall or ResolveOutcome.OuterWall || slide is Vector3 { Z: 0f };
+        return wall ? engine.ObjectWallNear(mode.Position, mode.CellId, (effects.Body?.Radius ?? 0f) + WallReach) : 0;
     }
 
     private static void Wait(GameWindow window)

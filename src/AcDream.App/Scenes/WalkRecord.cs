@@ -10,7 +10,9 @@ namespace AcDream.App.Scenes;
 /// <param name="IsOnGround">On terrain or a floor.</param>
 /// <param name="Refusal">The engine's outcome of this frame's last refused step; null when none was refused.</param>
 /// <param name="Slide">The engine's surface normal of this frame's last step answered <see cref="ResolveOutcome.Slid"/> (a wall's, horizontal, or a slope's); null when none slid.</param>
-internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null);
+/// <param name="FloorObjectId">The object whose floor the mover stands on (<see cref="PhysicsEngine.TryGetGround(Vector3, uint, float, out float, out Vector3, out uint)"/> with the player's step); 0 for the terrain or a cell's floor, or in the air.</param>
+/// <param name="WallObjectId">For a frame refused as Wall or OuterWall or slid along a wall: the object with a wall nearest (<see cref="PhysicsEngine.ObjectWallNear"/>); 0 otherwise or when no object's wall is near.</param>
+internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null, uint FloorObjectId = 0, uint WallObjectId = 0);
 
 /// <summary>How a leg ended.</summary>
 /// <param name="Leg">The leg.</param>
@@ -21,8 +23,8 @@ internal readonly record struct FrameSample(int Frame, Vector3 Position, uint Ce
 /// <param name="Slides">The frames during the leg with a move the engine answered <see cref="ResolveOutcome.Slid"/>: the surface's normal the engine reported, one per such frame, in frame order.</param>
 internal sealed record LegResult(SceneLeg Leg, int FirstFrame, int LastFrame, bool Reached, IReadOnlyDictionary<ResolveOutcome, int> Refusals, IReadOnlyList<Vector3> Slides);
 
-/// <summary>A landblock registered in or removed from the engine.</summary>
-internal readonly record struct StreamingEvent(int Frame, uint LandblockId, bool Loaded);
+/// <summary>A landblock registered in or removed from the engine; <paramref name="Objects"/>: how many objects were registered with it.</summary>
+internal readonly record struct StreamingEvent(int Frame, uint LandblockId, bool Loaded, int Objects = 0);
 
 /// <summary>A frame where the mover went down more than the step height while staying on the ground.</summary>
 internal readonly record struct Drop(int Frame, float FromZ, uint FromCellId, float ToZ, uint ToCellId);

@@ -60,6 +60,7 @@ internal static class WalkReport
         Line($"Refused moves: {string.Join(", ", Refusals.Select(o => $"{record.RefusalCount(o)} {Describe(o)}"))}.");
         int wallSlides = record.Samples.Count(s => s.Slide is Vector3 n && IsWall(n));
         Line($"Slid moves: {wallSlides} along walls, {record.SlideCount - wallSlides} along slopes' contours.");
+        AddObjects(text, record);
         Line($"Airborne: {record.AirborneFrames} frames.");
         foreach (Fall fall in record.Falls())
         {
@@ -101,6 +102,46 @@ internal static class WalkReport
         text.AppendLine();
         Line($"SVG: {svgPath}");
         return text.ToString();
+    }
+
+    /// <summary>
+    /// The objects: the sets the scene registered and how many objects each landblock got, then the
+    /// object floors the mover stood on and the object walls it met, by object id, with the frames and legs.
+    /// </summary>
+    private static void AddObjects(StringBuilder text, WalkRecord record)
+    {
+        void Line(FormattableString line) => text.AppendLine(line.ToString(CultureInfo.InvariantCulture));
+        IReadOnlyList<string> sets = record.Scene.Objects ?? [];
+        string registered = string.Join(", ", record.Streaming.Where(e => e.Loaded && e.Objects > 0).GroupBy(e => e.LandblockId)
+            .Select(g => string.Create(CultureInfo.InvariantCulture, $"{g.First().Objects} in 0x{Landblock(g.Key)}")));
+        Line($"Objects: {(sets.Count == 0 ? "none chosen" : string.Join(", ", sets))} (world {record.Scene.World}){(registered.Length > 0 ? $"; registered {registered}" : "")}.");
+        Line($"Object floors stood on: {DescribeObjects(record, s => s.FloorObjectId, _ => null)}.");
+        Line($"Object walls met: {DescribeObjects(record, s => s.WallObjectId, s => s.Refusal is ResolveOutcome refusal ? Describe(refusal) : "slid")}.");
+    }
+
+    /// <summary>Per object id (nonzero <paramref name="idOf"/>): its frames, first and last, the outcomes (<paramref name="kindOf"/>) and the legs.</summary>
+    private static string DescribeObjects(WalkRecord record, Func<FrameSample, uint> idOf, Func<FrameSample, string?> kindOf)
+    {
+        var parts = new List<string>();
+        foreach (IGrouping<uint, FrameSample> group in record.Samples.Where(s => idOf(s) != 0).GroupBy(idOf))
+        {
+            string name = World.HoltburgWorld.ObjectName(group.Key) is string n ? $" {n}" : "";
+            string kinds = string.Join(", ", group.Select(kindOf).Where(k => k is not null).GroupBy(k => k).Select(k => $"{k.Count()} × {k.Key}"));
+            var legs = new List<int>();
+            foreach (FrameSample sample in group)
+            {
+                int leg = 1 + record.Legs.ToList().FindIndex(l => sample.Frame >= l.FirstFrame && sample.Frame <= l.LastFrame);
+                if (leg > 0 && !legs.Contains(leg))
+                {
+                    legs.Add(leg);
+                }
+            }
+
+            parts.Add(string.Create(CultureInfo.InvariantCulture,
+                $"0x{group.Key:X8}{name}: {group.Count()} frames{(kinds.Length > 0 ? $" ({kinds})" : "")}, frames {group.First().Frame}-{group.Last().Frame}, leg{(legs.Count == 1 ? "" : "s")} {string.Join(", ", legs)}"));
+        }
+
+        return parts.Count == 0 ? "none" : string.Join("; ", parts);
     }
 
     /// <summary>Short text for the opt-in effects a scene uses.</summary>

@@ -35,7 +35,7 @@ internal static class WalkSvg
         Dictionary<uint, string> colours = Colours(record);
 
         // The scene's world frame, centred on Holtburg as the scene runner's engine: only its id and frame helpers are used.
-        var frame = new PhysicsEngine(HoltburgWorld.Holtburg);
+        var frame = new PhysicsEngine(world.Center);
 
         // Map extent: the route, padded, in world metres (the engine's frame: 0xA9B4's SW corner is (0, 0)).
         float minX = samples.Min(s => s.Position.X) - 15f, maxX = samples.Max(s => s.Position.X) + 15f;

@@ -7,13 +7,41 @@ using Environment = AcDream.Core.Dat.Environment;
 namespace AcDream.App.World;
 
 /// <summary>
-/// The default scene's world: synthetic hills on every landblock, flat at the cottage's floor height
-/// (94 m) around Holtburg's two buildings, one rock needle too steep to climb, and the 22 real
-/// Holtburg cells in landblock 0xA9B4. No real heights are public, so the heights are made up; the
-/// height table is non-linear like the game's.
+/// A scene's world. <see cref="Worlds.Holtburg"/> (the default): synthetic hills on every landblock,
+/// flat at the cottage's floor height (94 m) around Holtburg's two buildings, one rock needle too
+/// steep to climb, and the 22 real Holtburg cells in landblock 0xA9B4. No real heights are public, so
+/// the heights are made up; the height table is non-linear like the game's.
+/// <see cref="Worlds.Staircase"/>: landblock 0xF682 (the centre) and the land around it flat at
+/// <see cref="StaircaseFlatZ"/>, no cells. Either world serves the objects the scene chose
+/// (<see cref="ObjectSets"/>) as the dat would: in the landblock's <see cref="LandBlockInfo"/> or a
+/// cell's <see cref="EnvCell.StaticObjects"/>, with the GfxObjs they name.
 /// </summary>
 internal sealed class HoltburgWorld : ILandblockSource
 {
+    /// <summary>The worlds a scene may choose (<c>"world"</c>).</summary>
+    public static class Worlds
+    {
+        /// <summary>Holtburg: hills, the needle, the real cells; centre 0xA9B4.</summary>
+        public const string Holtburg = "holtburg";
+
+        /// <summary>The outdoor staircase's landblock 0xF682, flat at <see cref="StaircaseFlatZ"/>; centre 0xF682.</summary>
+        public const string Staircase = "staircase";
+    }
+
+    /// <summary>The object sets a scene may register (<c>"objects"</c>), with the world each stands in.</summary>
+    public static readonly IReadOnlyDictionary<string, string> ObjectSets = new Dictionary<string, string>
+    {
+        ["cottage"] = Worlds.Holtburg,
+        ["small-building"] = Worlds.Holtburg,
+        ["staircase"] = Worlds.Staircase,
+    };
+
+    /// <summary>The staircase's landblock.</summary>
+    public const uint StaircaseLandblock = ObjectPlacements.StaircaseLandblock;
+
+    /// <summary>Height (metres) of the staircase world's flat land: the first stair piece's origin, so its tread's low edge (59.015 m) is a 0.2 m step up.</summary>
+    public const float StaircaseFlatZ = 58.815f;
+
     /// <summary>Holtburg's landblock, the centre of the scene's world frame.</summary>
     public const uint Holtburg = 0xA9B4FFFFu;
 
@@ -34,9 +62,39 @@ internal sealed class HoltburgWorld : ILandblockSource
     private readonly List<CellFixtureReader.FixtureCell> _cells;
     private readonly Dictionary<uint, Environment> _environments = [];
 
+    private readonly bool _flat;
+    private readonly LandBlockInfo? _info;
+    private readonly Dictionary<uint, GfxObj> _gfxObjs = [];
+
+    /// <summary>Holtburg with no objects: the world of scenes that choose none.</summary>
     public HoltburgWorld()
+        : this(Worlds.Holtburg, [])
     {
-        _cells = HoltburgFixtures.ReadAll();
+    }
+
+    /// <summary>The world <paramref name="world"/> (<see cref="Worlds"/>) with the object sets <paramref name="objects"/> (<see cref="ObjectSets"/>).</summary>
+    /// <exception cref="ArgumentException">An unknown world or object set, or a set of another world.</exception>
+    public HoltburgWorld(string world, IReadOnlyList<string> objects)
+    {
+        ArgumentNullException.ThrowIfNull(objects);
+        if (world is not (Worlds.Holtburg or Worlds.Staircase))
+        {
+            throw new ArgumentException($"unknown world \"{world}\".", nameof(world));
+        }
+
+        foreach (string set in objects)
+        {
+            if (!ObjectSets.TryGetValue(set, out string? home) || home != world)
+            {
+                throw new ArgumentException($"object set \"{set}\" is not one of the {world} world's.", nameof(objects));
+            }
+        }
+
+        World = world;
+        Objects = [.. objects.Distinct()];
+        _flat = world == Worlds.Staircase;
+        Center = _flat ? StaircaseLandblock : Holtburg;
+        _cells = _flat ? [] : HoltburgFixtures.ReadAll();
         foreach (CellFixtureReader.FixtureCell cell in _cells)
         {
             // The fixtures carry no environment ids: each cell gets its own synthetic environment,
@@ -47,9 +105,62 @@ internal sealed class HoltburgWorld : ILandblockSource
             _environments.Add(0x0D000000u | environmentId, new Environment { Id = 0x0D000000u | environmentId, Cells = { [0] = cell.CellStruct } });
         }
 
-        HeightTable = BuildHeightTable();
+        HeightTable = BuildHeightTable(_flat ? StaircaseFlatZ : FlatZ);
         CellSurfaces = _cells.ConvertAll(c => new CellSurface(c.CellId, c.EnvCell, c.CellStruct));
+
+        if (Objects.Count > 0)
+        {
+            Dictionary<uint, GfxObj> all = HoltburgFixtures.ReadObjects();
+            _info = new LandBlockInfo { Id = (Center & 0xFFFF0000u) | 0xFFFEu };
+            foreach (string set in Objects)
+            {
+                switch (set)
+                {
+                    case "cottage":
+                        _info.Buildings.Add(ObjectPlacements.Cottage());
+                        break;
+                    case "small-building":
+                        _info.Buildings.Add(ObjectPlacements.SmallBuildingShell());
+                        break;
+                    case "staircase":
+                        _info.Objects.AddRange(ObjectPlacements.StaircaseInfo().Objects);
+                        break;
+                }
+            }
+
+            foreach (uint id in _info.Objects.Select(o => o.Id).Concat(_info.Buildings.Select(b => b.ModelId))
+                .Concat(_cells.SelectMany(c => c.EnvCell.StaticObjects).Select(o => o.Id)))
+            {
+                _gfxObjs[id] = all[id];
+            }
+        }
+
+        ObjectSurfaces = ObjectSurface.FromLandblock(Center, _info, _cells.ConvertAll(c => c.EnvCell), _gfxObjs, new Dictionary<uint, Setup>());
     }
+
+    /// <summary>The world's name (<see cref="Worlds"/>).</summary>
+    public string World { get; }
+
+    /// <summary>The object sets registered (<see cref="ObjectSets"/>), in the scene's order.</summary>
+    public IReadOnlyList<string> Objects { get; }
+
+    /// <summary>The landblock whose south-west corner is world (0, 0): 0xA9B4, or 0xF682 in the staircase world. All objects stand in it.</summary>
+    public uint Center { get; }
+
+    /// <summary>The engine's surfaces of the objects (all in <see cref="Center"/>), as the engine is given them (built once).</summary>
+    public IReadOnlyList<ObjectSurface> ObjectSurfaces { get; }
+
+    /// <summary>Whether this world is the one <paramref name="world"/> with exactly the object sets <paramref name="objects"/>.</summary>
+    public bool Is(string world, IReadOnlyList<string> objects) => World == world && Objects.SequenceEqual(objects.Distinct());
+
+    /// <summary>A short name for an object a scene may register, or null.</summary>
+    public static string? ObjectName(uint objectId) => objectId switch
+    {
+        ObjectPlacements.CottageShell => "cottage shell",
+        ObjectPlacements.SmallBuilding => "small building",
+        ObjectPlacements.StairPiece => "stair piece",
+        _ => null,
+    };
 
     /// <summary>The region's height table: 256 heights in metres, finer steps near 94 m, coarser away from it.</summary>
     public float[] HeightTable { get; }
@@ -61,13 +172,16 @@ internal sealed class HoltburgWorld : ILandblockSource
     public IReadOnlyList<CellSurface> CellSurfaces { get; }
 
     /// <summary>Table entry i = 94 + 0.5·d + 0.02·d·|d| metres with d = i − 64: monotonic, 94 m at 64.</summary>
-    public static float[] BuildHeightTable()
+    public static float[] BuildHeightTable() => BuildHeightTable(FlatZ);
+
+    /// <summary>Table entry i = <paramref name="flatZ"/> + 0.5·d + 0.02·d·|d| metres with d = i − 64: monotonic, <paramref name="flatZ"/> at 64.</summary>
+    private static float[] BuildHeightTable(float flatZ)
     {
         var table = new float[256];
         for (int i = 0; i < table.Length; i++)
         {
             float d = i - FlatIndex;
-            table[i] = FlatZ + (0.5f * d) + (0.02f * d * MathF.Abs(d));
+            table[i] = flatZ + (0.5f * d) + (0.02f * d * MathF.Abs(d));
         }
 
         return table;
@@ -118,17 +232,19 @@ internal sealed class HoltburgWorld : ILandblockSource
     };
 
     /// <summary>The game-triangle terrain of a landblock, as the engine gets it.</summary>
-    public TerrainSurface Terrain(uint landblockId) => new(Heights(landblockId), HeightTable, CellIds.LandblockOf(landblockId));
+    public TerrainSurface Terrain(uint landblockId) => new(HeightsOf(landblockId), HeightTable, CellIds.LandblockOf(landblockId));
 
     /// <inheritdoc />
     public LoadedLandblock Load(uint landblockId)
     {
         uint id = CellIds.LandblockOf(landblockId);
-        var landBlock = new LandBlock { Id = id, Height = Heights(id) };
-        return id == Holtburg
-            ? new LoadedLandblock(landBlock, _cells.ConvertAll(c => c.EnvCell), _environments)
+        var landBlock = new LandBlock { Id = id, Height = HeightsOf(id) };
+        return id == Center
+            ? new LoadedLandblock(landBlock, _cells.ConvertAll(c => c.EnvCell), _environments, _info, _gfxObjs, new Dictionary<uint, Setup>())
             : new LoadedLandblock(landBlock, [], new Dictionary<uint, Environment>());
     }
+
+    private byte[] HeightsOf(uint landblockId) => _flat ? Enumerable.Repeat(FlatIndex, LandBlock.VertexCount).ToArray() : Heights(landblockId);
 
     /// <summary>
     /// Height index of global vertex (gx, gy): 64 (94 m) on a rectangle around the buildings
