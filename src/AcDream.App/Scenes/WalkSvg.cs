@@ -21,6 +21,9 @@ internal static class WalkSvg
     private const float ProfileHeight = 220f;
     private const float ContourInterval = 2f;
 
+    /// <summary>Colour of the objects' footprints: purple, apart from the cells' hues, the route's greys, the red rings and the blue circles.</summary>
+    private const string ObjectColour = "#8e24aa";
+
     /// <summary>Stroke of the body's clearance circles: blue, apart from the route's cell colours and the red refusal rings.</summary>
     private const string ClearanceColour = "#1565c0";
 
@@ -49,6 +52,7 @@ internal static class WalkSvg
         map.Add(new XElement(Svg + "rect", Attr("x", Margin), Attr("y", mapTop), Attr("width", (maxX - minX) * scale), Attr("height", mapHeight), new XAttribute("fill", "#f4f1e8"), new XAttribute("stroke", "#999")));
         AddContours(map, world, frame, minX, maxX, minY, maxY, Map);
         AddFloorPlans(map, world, frame, colours, Map);
+        AddObjects(map, world, frame, scale, Map);
         AddRoute(map, samples, colours, s => Map(s.Position.X, s.Position.Y));
         foreach (Vector2 p in samples.Where(s => s.Refusal is not null).Select(s => Map(s.Position.X, s.Position.Y)).Distinct())
         {
@@ -107,6 +111,13 @@ internal static class WalkSvg
         }
 
         legend.Add(Label(lx, ly, "outdoor cells: alternating greys", 11));
+        if (world.ObjectSurfaces.Count > 0)
+        {
+            ly += 18f;
+            legend.Add(new XElement(Svg + "rect", Attr("x", Margin), Attr("y", ly - 9), Attr("width", 10f), Attr("height", 10f), new XAttribute("fill", ObjectColour), Attr("fill-opacity", 0.3f), new XAttribute("stroke", ObjectColour), new XAttribute("stroke-dasharray", "2,1")));
+            legend.Add(Label(Margin + 14, ly, Invariant($"objects ({string.Join(", ", world.ObjectSurfaces.Select(o => o.ObjectId).Distinct().Select(id => $"0x{id:X8}{(HoltburgWorld.ObjectName(id) is string n ? $" {n}" : "")}"))}): floors filled, walls dashed, seen from above; cylinders as circles"), 11));
+        }
+
         ly += 18f;
         legend.Add(new XElement(Svg + "circle", Attr("cx", Margin + 5), Attr("cy", ly - 4), Attr("r", 4f), new XAttribute("fill", "none"), new XAttribute("stroke", "#d00"), Attr("stroke-width", 1.5f)));
         legend.Add(Label(Margin + 14, ly, "refused move (the engine's outcome; the summary names it)", 11));
@@ -240,6 +251,51 @@ internal static class WalkSvg
 
         parent.Add(floors);
         parent.Add(plans);
+    }
+
+    /// <summary>
+    /// The objects' footprints, seen from above, in <see cref="ObjectColour"/>: their floors filled (the
+    /// triangles the engine samples, <see cref="ObjectSurface.GetFloorTriangles"/>) and their walls as
+    /// dashed outlines (<see cref="ObjectSurface.GetWalls"/>; a cylinder as a circle of its radius), one
+    /// group per object titled with its id, so they read apart from the cells' solid grey walls.
+    /// </summary>
+    private static void AddObjects(XElement parent, HoltburgWorld world, PhysicsEngine frame, float scale, Func<float, float, Vector2> place)
+    {
+        var objects = new XElement(Svg + "g", new XAttribute("id", "objects"), new XAttribute("stroke", ObjectColour), new XAttribute("stroke-dasharray", "3,2"), Attr("stroke-width", 0.5f));
+        foreach (ObjectSurface surface in world.ObjectSurfaces)
+        {
+            Vector2 Place(Vector3 local)
+            {
+                Vector3 p = frame.ToWorld(world.Center, local);
+                return place(p.X, p.Y);
+            }
+
+            string Points(IEnumerable<Vector3> local) => string.Join(" ", local.Select(Place).Select(p => Invariant($"{p.X:0.##},{p.Y:0.##}")));
+            string name = HoltburgWorld.ObjectName(surface.ObjectId) is string n ? $" {n}" : "";
+            var group = new XElement(Svg + "g", new XAttribute("class", "object"), new XAttribute("data-object-id", $"0x{surface.ObjectId:X8}"),
+                new XElement(Svg + "title", $"object 0x{surface.ObjectId:X8}{name}{(surface.IsBuilding ? " (building shell)" : "")}"));
+            foreach (ObjectWallInfo wall in surface.GetWalls())
+            {
+                if (wall.Radius > 0f)
+                {
+                    Vector2 c = Place(wall.Outline[0]);
+                    group.Add(new XElement(Svg + "circle", new XAttribute("class", "object-wall"), Attr("cx", c.X), Attr("cy", c.Y), Attr("r", wall.Radius * scale), new XAttribute("fill", "none")));
+                }
+                else
+                {
+                    group.Add(new XElement(Svg + "polygon", new XAttribute("class", "object-wall"), new XAttribute("points", Points(wall.Outline)), new XAttribute("fill", "none")));
+                }
+            }
+
+            foreach ((Vector3 a, Vector3 b, Vector3 c) in surface.GetFloorTriangles())
+            {
+                group.Add(new XElement(Svg + "polygon", new XAttribute("class", "object-floor"), new XAttribute("points", Points([a, b, c])), new XAttribute("fill", ObjectColour), Attr("fill-opacity", 0.3f), new XAttribute("stroke", "none")));
+            }
+
+            objects.Add(group);
+        }
+
+        parent.Add(objects);
     }
 
     /// <summary>
