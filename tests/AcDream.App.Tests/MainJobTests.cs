@@ -17,7 +17,7 @@ public sealed class MainJobTests : IDisposable
     [Fact]
     public void SceneRunner_DefaultScene_VisitsTheCellsInOrderAndEndsInTheCellar()
     {
-        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
+        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault());
 
         var visits = record.CellVisits();
         var indoor = visits.Select(v => CellIds.IsIndoor(v.CellId) ? v.CellId : 0u)
@@ -42,13 +42,13 @@ public sealed class MainJobTests : IDisposable
         record.AirborneFrames.Should().Be(fall.AirborneFrames);
         record.Streaming.Count(e => e.Loaded).Should().Be(12, "9 at the start and 3 after the seam");
         record.Streaming.Count(e => !e.Loaded).Should().Be(3);
-        record.Legs.Should().HaveCount(22);
+        record.Legs.Should().HaveCount(26);
     }
 
     [Fact]
     public void SceneRunner_DefaultScene_SlidesAndRefusalsAreTheEnginesOutcomesPerLegAndInTheSummary()
     {
-        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
+        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault());
         string Slides(int leg) => string.Join(" ", record.Legs[leg - 1].Slides);
 
         // Leg 2 runs at the rock needle: with walkable slope and a body the engine slides it along the
@@ -86,7 +86,7 @@ public sealed class MainJobTests : IDisposable
     [Fact]
     public void SceneRunner_DefaultScene_EastWallLegSlidesNorthAlongTheWallItsRadiusAway()
     {
-        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
+        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault());
         LegResult leg = record.Legs[7];
         const float wallX = 142.1f; // the main room 0x0143's east wall, landblock-local = world here
         FrameSample[] frames = record.Samples.Where(s => s.Frame >= leg.FirstFrame - 1 && s.Frame <= leg.LastFrame).ToArray();
@@ -118,7 +118,7 @@ public sealed class MainJobTests : IDisposable
     [Fact]
     public void SceneRunner_DefaultScene_DoorwayLegsPassTheWestDoorAtFortyFiveDegrees()
     {
-        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld());
+        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault());
         var jamb = new Vector2(136.7f, 6.1f); // the west door 0x0145's north jamb on the main room's side
 
         foreach ((int index, uint[] cells) in new[] { (12, new[] { 0xA9B40029u, 0xA9B40145u, 0xA9B40143u }), (13, new[] { 0xA9B40143u, 0xA9B40145u, 0xA9B40029u }) })
@@ -149,7 +149,7 @@ public sealed class MainJobTests : IDisposable
     public void SceneRunner_LiteralEffects_ShaftIsAOneFrameDrop()
     {
         Scene scene = SceneReader.ReadDefault() with { Effects = MovementOptions.Literal };
-        WalkRecord record = SceneRunner.Run(scene, new HoltburgWorld());
+        WalkRecord record = SceneRunner.Run(scene);
 
         record.Drops.Should().ContainSingle(d => d.ToCellId == 0xA9B40174u && d.FromZ - d.ToZ > 3.9f);
         record.AirborneFrames.Should().Be(0, "the literal engine always snaps to the ground");
@@ -213,8 +213,8 @@ public sealed class MainJobTests : IDisposable
         MainJob.Run(["--scene", file, "--out", _folder, "--quiet"], output, new StringWriter()).Should().Be(0);
 
         output.ToString().Trim().Should().Be($"SVG: {Path.Combine(_folder, "holtburg-walk.svg")}", "--quiet prints only the path");
-        WalkRecord fromFile = SceneRunner.Run(SceneReader.ReadFile(file), new HoltburgWorld(), 400);
-        WalkRecord embedded = SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld(), 400);
+        WalkRecord fromFile = SceneRunner.Run(SceneReader.ReadFile(file), 400);
+        WalkRecord embedded = SceneRunner.Run(SceneReader.ReadDefault(), 400);
         fromFile.Samples.Should().Equal(embedded.Samples);
         fromFile.Truncated.Should().BeTrue();
         fromFile.Final.Frame.Should().Be(400, "--frames stops the walk");

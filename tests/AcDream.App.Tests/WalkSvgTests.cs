@@ -14,8 +14,9 @@ public class WalkSvgTests
     [Fact]
     public void Build_Floors_AreTheEnginesFloorTrianglesOfTheCells()
     {
-        var world = new HoltburgWorld();
-        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault(), world, maxFrames: 1);
+        Scene scene = SceneReader.ReadDefault();
+        HoltburgWorld world = scene.CreateWorld();
+        WalkRecord record = SceneRunner.Run(scene, world, maxFrames: 1);
         var frame = new PhysicsEngine(HoltburgWorld.Holtburg);
         List<Vector3[]> expected = world.CellSurfaces
             .SelectMany(c => c.GetFloorTriangles().Select(t => new[] { t.A, t.B, t.C }.Select(v => frame.ToWorld(c.CellId, v)).ToArray()))
