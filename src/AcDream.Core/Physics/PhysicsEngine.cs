@@ -357,6 +357,12 @@ public sealed class PhysicsEngine
             }
         }
 
+        if (outdoor.Count >= WallSet.ObjectFlag)
+        {
+            throw new ArgumentException(
+                $"landblock 0x{prefix | 0xFFFF:X8}: {outdoor.Count} objects outdoors; at most {WallSet.ObjectFlag - 1} are supported.", nameof(objects));
+        }
+
         return [.. outdoor];
 
         int IndexOf(uint cellId, string what)
