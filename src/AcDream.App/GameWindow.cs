@@ -17,7 +17,8 @@ namespace AcDream.App;
 /// The streaming window is the square of landblocks within <see cref="StreamingRadius"/> of the
 /// observer's landblock (3 × 3), clipped to the world. The engine is touched only by the frame
 /// thread; the loader thread only reads from the source. The two share only the request and result
-/// queues, under a lock that no callback runs inside. A cell that cannot be built is skipped with
+/// queues, under a lock that no callback runs inside. A cell or an object (of the landblock's
+/// <see cref="LandBlockInfo"/> or a cell's static objects) that cannot be built is skipped with
 /// a warning; a landblock that cannot be built at all is not registered (the engine never holds half
 /// of one), is reported, and is requested again <see cref="RetryDelayFrames"/> frames later.
 /// </remarks>
