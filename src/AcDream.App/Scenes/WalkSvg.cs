@@ -115,7 +115,9 @@ internal static class WalkSvg
         {
             ly += 18f;
             legend.Add(new XElement(Svg + "rect", Attr("x", Margin), Attr("y", ly - 9), Attr("width", 10f), Attr("height", 10f), new XAttribute("fill", ObjectColour), Attr("fill-opacity", 0.3f), new XAttribute("stroke", ObjectColour), new XAttribute("stroke-dasharray", "2,1")));
-            legend.Add(Label(Margin + 14, ly, Invariant($"objects ({string.Join(", ", world.ObjectSurfaces.Select(o => o.ObjectId).Distinct().Select(id => $"0x{id:X8}{(HoltburgWorld.ObjectName(id) is string n ? $" {n}" : "")}"))}): floors filled, walls dashed, seen from above; cylinders as circles"), 11));
+            legend.Add(Label(Margin + 14, ly, "objects, seen from above: floors filled, walls dashed, cylinders as circles", 11));
+            ly += 16f;
+            legend.Add(Label(Margin + 14, ly, Invariant($"objects ({string.Join(", ", world.ObjectSurfaces.Select(o => o.ObjectId).Distinct().Select(id => $"0x{id:X8}{(HoltburgWorld.ObjectName(id) is string n ? $" {n}" : "")}"))})"), 11));
         }
 
         ly += 18f;
