@@ -315,20 +315,19 @@ public sealed class GameWindow : IDisposable
         }
 
         List<ObjectSurface> objects = BuildObjects(id, loaded, ids);
-        try
+        if (objects.Count > 0)
         {
-            Physics.AddLandblock(id, terrain, cells, objects);
-        }
-        catch (ArgumentException e) when (objects.Count > 0)
-        {
-            // The objects were checked one by one; what the engine still refuses is their combination.
-            _log($"landblock 0x{id:X8}: its {objects.Count} objects skipped: {e.Message}");
-            objects.Clear();
-        }
-        catch (ArgumentException e)
-        {
-            error = e.Message;
-            return false;
+            try
+            {
+                Physics.AddLandblock(id, terrain, cells, objects);
+            }
+            catch (ArgumentException e)
+            {
+                // The objects were checked one by one; what the engine still refuses is their combination
+                // (or the landblock itself, which the call without objects then reports).
+                _log($"landblock 0x{id:X8}: its {objects.Count} objects skipped: {e.Message}");
+                objects.Clear();
+            }
         }
 
         if (objects.Count == 0)
