@@ -87,7 +87,27 @@ public class CellarStairTests
 
     [Theory]
     [MemberData(nameof(Walks))]
-    public void The_cellar_is_entered_down_its_stair_walked_and_left_up_into_the_room_above(string cellar, string frame, bool player)
+    public void The_cellar_is_entered_down_its_stair_walked_and_left_up_into_the_room_above(string cellar, string frame, bool player) =>
+        Walk(cellar, frame, player, cellar == "cottage" ? 141.3f : 153.92f);
+
+    /// <summary>
+    /// Lanes across each stair: the point mover near both edges; the body where it clears the walls beside
+    /// the stair (nearer the cottage opening's west edge its head meets the 0.2 m slab edge of the room's
+    /// floor, 0x0146's wall at x 140.5, z 93.8..94, as it climbs; nearer its east edge it meets the
+    /// room's wall at x 142.1).
+    /// </summary>
+    public static TheoryData<string, float, bool> Lanes() => new()
+    {
+        { "cottage", 140.6f, false }, { "cottage", 142.0f, false }, { "cottage", 141.0f, true }, { "cottage", 141.6f, true },
+        { "building B", 153.2f, false }, { "building B", 154.6f, false }, { "building B", 153.6f, true }, { "building B", 154.3f, true },
+    };
+
+    [Theory]
+    [MemberData(nameof(Lanes))]
+    public void The_stairs_are_walked_down_and_up_in_other_lanes_across_them(string cellar, float laneX, bool player) =>
+        Walk(cellar, "centred", player, laneX);
+
+    private static void Walk(string cellar, string frame, bool player, float laneX)
     {
         PhysicsEngine engine = Engine(frame);
         bool cottage = cellar == "cottage";
@@ -101,9 +121,10 @@ public class CellarStairTests
         // ceiling, 93.8, for y < 5.99), down it (+y) into the cellar, west along the cellar and back, up
         // the ramp and west into the room. Building B: from the room north of the opening, south (−y)
         // down the landing, ramp and tread to the cellar floor, east along the cellar and back, and up.
+        int east = (int)MathF.Round((laneX - 139.6f) / 0.1f);
         (Vector3 start, (Vector2 Delta, int Frames)[] legs) = cottage
-            ? (new Vector3(139.6f, 5.9f, 94f), new (Vector2, int)[] { (new Vector2(0.1f, 0f), 17), (new Vector2(0f, 0.1f), 42), (new Vector2(-0.1f, 0f), 20), (new Vector2(0.1f, 0f), 20), (new Vector2(0f, -0.1f), 42), (new Vector2(-0.1f, 0f), 17) })
-            : (new Vector3(153.92f, 12f, 94f), new (Vector2, int)[] { (new Vector2(0f, -0.1f), 65), (new Vector2(0.1f, 0f), 40), (new Vector2(-0.1f, 0f), 40), (new Vector2(0f, 0.1f), 65) });
+            ? (new Vector3(laneX - (0.1f * east), 5.9f, 94f), new (Vector2, int)[] { (new Vector2(0.1f, 0f), east), (new Vector2(0f, 0.1f), 42), (new Vector2(-0.1f, 0f), 20), (new Vector2(0.1f, 0f), 20), (new Vector2(0f, -0.1f), 42), (new Vector2(-0.1f, 0f), east) })
+            : (new Vector3(laneX, 12f, 94f), new (Vector2, int)[] { (new Vector2(0f, -0.1f), 65), (new Vector2(0.1f, 0f), 40), (new Vector2(-0.1f, 0f), 40), (new Vector2(0f, 0.1f), 65) });
 
         MovementOptions options = player ? MovementOptions.Player : default;
         var at = new ResolveResult(engine.ToWorld(TestData.Holtburg, start), room, true);
@@ -123,7 +144,7 @@ public class CellarStairTests
                 Vector3 local = engine.ToLandblockLocal(TestData.Holtburg, at.Position);
                 engine.TryGetGround(at.Position, at.CellId, Step, out float groundZ, out _, out uint objectId);
                 trace.AppendLine($"leg {legIndex} frame {i}: local ({local.X:F4}, {local.Y:F4}, {local.Z:F5}) 0x{at.CellId:X8} ground {at.IsOnGround} {at.Outcome} on 0x{objectId:X8} at {groundZ:F5}");
-                string why = $"{cellar}, {frame}, {(player ? "Player" : "point")}, leg {legIndex} frame {i}: {before} → {at}\n{trace}";
+                string why = $"{cellar}, {frame}, {(player ? "Player" : "point")}, lane x {laneX}, leg {legIndex} frame {i}: {before} → {at}\n{trace}";
 
                 at.IsOnGround.Should().BeTrue(why);
                 at.IsRefused.Should().BeFalse(why);
