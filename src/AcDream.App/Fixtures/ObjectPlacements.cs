@@ -141,8 +141,9 @@ public static class ObjectPlacements
 
     /// <summary>
     /// A closed solid running along Y between <paramref name="xFirst"/> and <paramref name="xSecond"/>: its
-    /// top follows <paramref name="profile"/> ((y, z) in walking order; one walkable quad per pair, its
-    /// vertices (xFirst, y0), (xFirst, y1), (xSecond, y1), (xSecond, y0)), its bottom is flat at
+    /// top follows <paramref name="profile"/> ((y, z) in walking order, y never turning back; one quad per
+    /// pair, its vertices (xFirst, y0), (xFirst, y1), (xSecond, y1), (xSecond, y0): a tread or ramp, or an
+    /// upright riser where y0 = y1), its bottom is flat at
     /// <paramref name="bottomZ"/>, with upright sides and end faces; every face wound to face outward.
     /// </summary>
     private static GfxObj Extruded(uint id, float xFirst, float xSecond, float bottomZ, (float Y, float Z)[] profile)

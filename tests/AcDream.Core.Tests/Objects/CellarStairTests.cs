@@ -207,6 +207,57 @@ public class CellarStairTests
     }
 
     [Fact]
+    public void Each_stair_is_a_closed_solid_facing_outward()
+    {
+        // Closed and consistently wound: the polygons' area vectors sum to zero. Facing outward: the
+        // volume by the divergence theorem is the profile's area times the width, positive.
+        foreach ((_, GfxObj stair, _) in ObjectPlacements.CellarStairs())
+        {
+            Vector3 origin = stair.VertexArray.Vertices[0].Origin;
+            double volume = 0;
+            var sum = Vector3.Zero;
+            var xs = new List<float>();
+            var profile = new SortedDictionary<float, List<float>>();
+            float bottom = stair.VertexArray.Vertices.Values.Min(v => v.Origin.Z);
+            foreach (Polygon polygon in stair.PhysicsPolygons.Values)
+            {
+                Vector3[] v = [.. polygon.VertexIds.Select(id => stair.VertexArray.Vertices[(ushort)id].Origin - origin)];
+                for (int i = 1; i + 1 < v.Length; i++)
+                {
+                    Vector3 area = Vector3.Cross(v[i] - v[0], v[i + 1] - v[0]) / 2f;
+                    sum += area;
+                    volume += Vector3.Dot(v[0], Vector3.Cross(v[i], v[i + 1])) / 6.0;
+                }
+            }
+
+            foreach (SWVertex vertex in stair.VertexArray.Vertices.Values)
+            {
+                xs.Add(vertex.Origin.X);
+                if (vertex.Origin.Z > bottom)
+                {
+                    (profile.TryGetValue(vertex.Origin.Y, out List<float>? zs) ? zs : profile[vertex.Origin.Y] = []).Add(vertex.Origin.Z);
+                }
+            }
+
+            // The profile's area: trapezoids between successive y, from the top at each y (a riser's y has
+            // two top heights: the lower one on the side toward the stair's foot) down to the bottom.
+            float[] ys = [.. profile.Keys];
+            bool rising = profile[ys[^1]].Max() > profile[ys[0]].Max();
+            double section = 0;
+            for (int i = 0; i + 1 < ys.Length; i++)
+            {
+                float left = rising ? profile[ys[i]].Max() : profile[ys[i]].Min();
+                float right = rising ? profile[ys[i + 1]].Min() : profile[ys[i + 1]].Max();
+                section += (ys[i + 1] - ys[i]) * (((left + right) / 2.0) - bottom);
+            }
+
+            double expected = section * (xs.Max() - xs.Min());
+            sum.Length().Should().BeLessThan(1e-3f, $"0x{stair.Id:X8}: the area vectors sum to {sum}");
+            volume.Should().BeApproximately(expected, 1e-3 * expected, $"0x{stair.Id:X8}: volume {volume} m³, profile × width {expected} m³");
+        }
+    }
+
+    [Fact]
     public void A_mover_risen_above_its_cellar_s_ceiling_on_the_stair_steps_onto_the_room_s_floor_beside_the_opening()
     {
         // The defect this fixed: on the cottage ramp at y 5.9 (z 93.898, above the cellar's ceiling and its
