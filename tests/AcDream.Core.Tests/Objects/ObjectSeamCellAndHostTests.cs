@@ -144,4 +144,81 @@ public class ObjectSeamCellAndHostTests
 
         return a / 2;
     }
+
+    [Theory]
+    [InlineData("point")]
+    [InlineData("body")]
+    public void A_tree_in_a_room_stops_the_point_and_keeps_the_body_off(string mover)
+    {
+        MovementOptions options = mover == "point" ? MovementOptions.Literal : new MovementOptions { Body = MoverBody.Player };
+        List<CellSurface> cells = HoltburgCells.Surfaces();
+        var axis = new Vector2(139.4f, 6.5f);
+        (Setup tree, Dictionary<uint, GfxObj> parts) = ObjectKit.Tree(0.3f, 2f);
+        var engine = new PhysicsEngine(TestData.Holtburg);
+        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), cells, [new ObjectSurface(tree, parts, ObjectKit.At(new Vector3(axis, 94f), 0f), 0xA9B40143)]);
+        foreach (float offset in new[] { 0f, 0.2f, -0.5f })
+        {
+            var at = new ResolveResult(new Vector3(axis.X - 2f, axis.Y + offset, 94f), 0xA9B40143, true);
+            bool stopped = false;
+            for (int i = 0; i < 25; i++)
+            {
+                ResolveResult r = engine.Resolve(at.Position, at.CellId, new Vector3(0.1f, 0f, 0f), 0.6f, options);
+                float d = Vector2.Distance(new Vector2(r.Position.X, r.Position.Y), axis);
+                d.Should().BeGreaterThan((mover == "point" ? 0.3f : 0.78f) - 0.001f, $"{mover}, offset {offset}, move {i}: {at} → {r}");
+                if (mover == "point" && r.IsRefused)
+                {
+                    r.Outcome.Should().Be(ResolveOutcome.Wall, $"{r}");
+                    stopped = true;
+                }
+
+                r.CellId.Should().Be(0xA9B40143u, $"{r}");
+                at = r;
+            }
+
+            if (mover == "point")
+            {
+                stopped.Should().Be(MathF.Abs(offset) < 0.3f, $"offset {offset}: {at}");
+            }
+        }
+    }
+
+    [Theory]
+    [InlineData("point")]
+    [InlineData("Player")]
+    public void The_staircase_side_is_a_wall_where_it_is_higher_than_the_step(string mover)
+    {
+        MovementOptions options = mover == "point" ? MovementOptions.Literal : MovementOptions.Player;
+        var engine = new PhysicsEngine(0xF682FFFF);
+        engine.AddLandblock(0xF682FFFF, TestData.FlatTerrain(58.815f, 0xF682FFFF), [], RealObjects.Staircase());
+        // The pieces are slabs 0.6 m thick: at y 78 piece 6 spans z 60.9…61.5, above a player's head (60.65),
+        // so a mover walks under it.
+        var under = new ResolveResult(new Vector3(134f, 78f, 58.815f), 0xF6820000, true);
+        for (int i = 0; i < 30; i++)
+        {
+            under = engine.Resolve(under.Position, under.CellId, new Vector3(-0.1f, 0f, 0f), 0.6f, options);
+        }
+
+        // (The body's top does touch the underside of piece 5 at y < 77.99, which turns it a little north.)
+        under.Position.X.Should().BeLessThan(131.75f, $"{mover} walked under the top of the staircase: {under}");
+        under.Position.Z.Should().Be(58.815f, $"{under}");
+
+        // At y 76.2 piece 2 spans z 59.38…59.98 (x 131.25…132.75): its side crosses the feet + step (59.415) and the body.
+        var at = new ResolveResult(new Vector3(134f, 76.2f, 58.815f), 0xF6820000, true);
+        for (int i = 0; i < 20; i++)
+        {
+            at = engine.Resolve(at.Position, at.CellId, new Vector3(-0.1f, 0f, 0f), 0.6f, options);
+            at.Position.X.Should().BeGreaterThan(132.75f + (mover == "point" ? 0f : 0.479f), $"{mover}, move {i}: {at}");
+            at.Position.Z.Should().Be(58.815f, $"{at}");
+        }
+
+        // Beside the first tread (0.2 m to 0.6 m up): stepped onto from the side.
+        at = new ResolveResult(new Vector3(134f, 75.1f, 58.815f), 0xF6820000, true);
+        for (int i = 0; i < 20; i++)
+        {
+            at = engine.Resolve(at.Position, at.CellId, new Vector3(-0.1f, 0f, 0f), 0.6f, options);
+        }
+
+        at.Position.X.Should().BeLessThan(132.75f, $"{mover}: on the first tread: {at}");
+        at.Position.Z.Should().BeApproximately(59.015f + (0.8f * (at.Position.Y - 74.995f)), 1e-4f, $"on the tread's plane: {at}");
+    }
 }
