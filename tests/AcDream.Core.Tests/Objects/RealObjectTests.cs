@@ -2,11 +2,12 @@ using System.Numerics;
 using AcDream.App.Fixtures;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
+using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Objects;
 
 /// <summary>The real objects: the cottage's shell with the Holtburg cells, the outdoor staircase, the small building on its plinth.</summary>
-public class RealObjectTests
+public class RealObjectTests(ITestOutputHelper output)
 {
     private const float Step = 0.6f;
     private const uint Outdoor = 0xA9B40000;
@@ -131,6 +132,15 @@ public class RealObjectTests
 
             firstIndoor.Should().Be(0xA9B40145u, $"{name} at {angle}°: {string.Join("\n", trace)}");
             at.Position.Z.Should().Be(94f, $"{name}: on the room's floor");
+
+            // And back out the way it came.
+            for (int i = 0; i < 30 && at.Position.X > 135f; i++)
+            {
+                at = engine.Resolve(at.Position, at.CellId, new Vector3(dir * -0.1f, 0f), Step, options);
+            }
+
+            at.Position.X.Should().BeLessThan(135.1f, $"{name} at {angle}°: left by the door: {at}");
+            CellIds(at).Should().BeLessThan(0x100, $"{name}: outdoors again: {at}");
         }
     }
 
@@ -202,6 +212,7 @@ public class RealObjectTests
         at.Position.Z.Should().Be(58.815f, $"{mover}: back on the ground: {at}");
         at.IsOnGround.Should().BeTrue($"{at}");
         maxError.Should().BeLessThan(1e-4, $"{mover}: largest distance of Z from its tread's plane");
+        output.WriteLine($"{mover}: top z {top:R}, largest distance from a tread's plane {maxError:E2} m");
     }
 
     /// <summary>Distance of the result's Z from the plane of the tread under it (0 off the treads).</summary>
