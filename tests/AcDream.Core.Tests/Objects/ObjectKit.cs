@@ -99,6 +99,11 @@ internal static class ObjectKit
         double best = terrain;
         foreach (RefFloor f in floors)
         {
+            if (x < f.MinX - margin || x > f.MaxX + margin || y < f.MinY - margin || y > f.MaxY + margin)
+            {
+                continue;
+            }
+
             double edge = f.SignedInside(x, y);
             if (Math.Abs(edge) < margin)
             {
@@ -139,6 +144,14 @@ internal static class ObjectKit
 /// <summary>One placed polygon in double precision: its vertices and unit winding normal.</summary>
 internal sealed record RefFloor((double X, double Y, double Z)[] V, double Nx, double Ny, double Nz, bool Walkable)
 {
+    public double MinX { get; } = V.Min(v => v.X);
+
+    public double MaxX { get; } = V.Max(v => v.X);
+
+    public double MinY { get; } = V.Min(v => v.Y);
+
+    public double MaxY { get; } = V.Max(v => v.Y);
+
     public double ZAt(double x, double y) => V[0].Z - (((Nx * (x - V[0].X)) + (Ny * (y - V[0].Y))) / Nz);
 
     /// <summary>Distance inside the (convex) XY outline: positive inside, negative outside (for an upward polygon).</summary>
