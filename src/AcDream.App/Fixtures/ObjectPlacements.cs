@@ -71,5 +71,145 @@ public static class ObjectPlacements
         return info;
     }
 
+    /// <summary>Synthetic GfxObj id (not game data) of the cottage's cellar stair, built here around the recorded ramp of cell 0xA9B40147.</summary>
+    public const uint CottageCellarStair = 0x01FFF147;
+
+    /// <summary>Synthetic GfxObj id (not game data) of building B's cellar stair, built here around the recorded ramp of cell 0xA9B40174.</summary>
+    public const uint BuildingBCellarStair = 0x01FFF174;
+
+    /// <summary>The cottage's cellar (the cottage stair stands in it).</summary>
+    public const uint CottageCellar = 0xA9B40147;
+
+    /// <summary>Building B's cellar (its stair stands in it).</summary>
+    public const uint BuildingBCellar = 0xA9B40174;
+
+    /// <summary>
+    /// The two cellar stairs of landblock 0xA9B4, each a synthetic GfxObj whose walkable top is the ramp
+    /// recorded in movement captures (<c>Fixtures/objects/captured-walkables.json</c>, vertex for vertex and
+    /// in the recorded order), made a closed solid down to its cellar's floor, with the cell it stands in
+    /// and its placement. The vertices are landblock-local and the placement frame is the identity, so the
+    /// recorded numbers are the placed numbers. What is recorded and what is assumed (the landings, the
+    /// solid below the ramp, the ids): <c>Fixtures/objects/README.md</c>, "Cellar stair objects (built here)".
+    /// A host puts each placement into its cell's <c>EnvCell.StaticObjects</c> and each GfxObj among its
+    /// GfxObjs, and registers them through <c>ObjectSurface.FromLandblock</c>.
+    /// </summary>
+    public static IReadOnlyList<(uint CellId, GfxObj Stair, Stab Placement)> CellarStairs() =>
+    [
+        (CottageCellar, CottageStair(), new Stab { Id = CottageCellarStair }),
+        (BuildingBCellar, BuildingBStair(), new Stab { Id = BuildingBCellarStair }),
+    ];
+
+    /// <summary>
+    /// The cottage's stair: the recorded ramp (x 140.5..142.1, z 90.999794 at y 8.70195 up to z 93.999794
+    /// at y 5.8019505), down to the cellar floor (z 90.95).
+    /// </summary>
+    public static GfxObj CottageStair() =>
+        Extruded(CottageCellarStair, 140.5f, 142.1f, 90.95f, [(8.70195f, 90.999794f), (5.8019505f, 93.999794f)]);
+
+    /// <summary>
+    /// Building B's stair: the recorded ramp (x 153.069..154.76901, z 90.6 at y 6.3531494 up to z 93.4 at
+    /// y 9.853149), with an assumed tread below it and an assumed landing above it, down to the cellar
+    /// floor (z 90.001).
+    /// </summary>
+    public static GfxObj BuildingBStair() =>
+        Extruded(
+            BuildingBCellarStair,
+            154.76901f,
+            153.069f,
+            90.001f,
+            [
+                (6.3531494f - BottomTreadDepth, BottomTreadZ), (6.3531494f, BottomTreadZ), // assumed bottom tread
+                (6.3531494f, 90.6f), (9.853149f, 93.4f), // the recorded ramp
+                (10.353151f, TopLandingZ), // assumed top landing: the ramp's own plane on to the floor opening's edge
+            ]);
+
+    /// <summary>
+    /// Assumed (not game data): building B's bottom tread, 0.375 m deep, half-way (z 90.3005) between the
+    /// cellar floor (90.001) and the ramp's foot (90.6), which stands 0.599 m above that floor.
+    /// </summary>
+    public const float BottomTreadZ = 90.3005f;
+
+    /// <summary>Assumed (not game data): the depth of building B's bottom tread along Y, metres.</summary>
+    public const float BottomTreadDepth = 0.375f;
+
+    /// <summary>
+    /// Assumed (not game data): building B's top landing continues the ramp's plane (rise 0.8 per metre)
+    /// from its top edge (y 9.853149, z 93.4) to the edge of the floor opening (y 10.353151), where it is
+    /// at z 93.8: 0.2 m below the room's floor (94) and above the cellar's ceiling opening (93.636).
+    /// </summary>
+    public const float TopLandingZ = 93.8f;
+
+    /// <summary>
+    /// A closed solid running along Y between <paramref name="xFirst"/> and <paramref name="xSecond"/>: its
+    /// top follows <paramref name="profile"/> ((y, z) in walking order, y never turning back; one quad per
+    /// pair, its vertices (xFirst, y0), (xFirst, y1), (xSecond, y1), (xSecond, y0): a tread or ramp, or an
+    /// upright riser where y0 = y1), its bottom is flat at
+    /// <paramref name="bottomZ"/>, with upright sides and end faces; every face wound to face outward.
+    /// </summary>
+    private static GfxObj Extruded(uint id, float xFirst, float xSecond, float bottomZ, (float Y, float Z)[] profile)
+    {
+        var gfxObj = new GfxObj { Id = id, Flags = GfxObjFlags.HasPhysics };
+        var ids = new Dictionary<Vector3, short>();
+        float xMin = MathF.Min(xFirst, xSecond), xMax = MathF.Max(xFirst, xSecond);
+        float yMin = profile.Min(p => p.Y), yMax = profile.Max(p => p.Y);
+        Vector3 centre = new((xMin + xMax) / 2f, (yMin + yMax) / 2f, bottomZ);
+        float along = MathF.Sign(profile[^1].Y - profile[0].Y);
+        for (int i = 0; i + 1 < profile.Length; i++)
+        {
+            (float y0, float z0) = profile[i];
+            (float y1, float z1) = profile[i + 1];
+            // Up, and toward the lower side: a tread or ramp faces up, a riser (y0 = y1) faces down the stair.
+            Face([new(xFirst, y0, z0), new(xFirst, y1, z1), new(xSecond, y1, z1), new(xSecond, y0, z0)], new Vector3(0f, -along * MathF.Sign(z1 - z0), 1f));
+            if (y0 == y1)
+            {
+                continue; // a riser: no sides of its own
+            }
+
+            Face([new(xMin, y0, bottomZ), new(xMin, y1, bottomZ), new(xMin, y1, z1), new(xMin, y0, z0)], -Vector3.UnitX);
+            Face([new(xMax, y0, bottomZ), new(xMax, y1, bottomZ), new(xMax, y1, z1), new(xMax, y0, z0)], Vector3.UnitX);
+        }
+
+        foreach ((float y, float z) in new[] { profile[0], profile[^1] })
+        {
+            if (z > bottomZ)
+            {
+                Face([new(xMin, y, bottomZ), new(xMax, y, bottomZ), new(xMax, y, z), new(xMin, y, z)], new Vector3(0f, y - centre.Y, 0f));
+            }
+        }
+
+        Face([new(xMin, yMin, bottomZ), new(xMax, yMin, bottomZ), new(xMax, yMax, bottomZ), new(xMin, yMax, bottomZ)], -Vector3.UnitZ);
+        return gfxObj;
+
+        void Face(Vector3[] loop, Vector3 outward)
+        {
+            Vector3 n = Vector3.Zero;
+            for (int i = 0; i < loop.Length; i++)
+            {
+                Vector3 a = loop[i], b = loop[(i + 1) % loop.Length];
+                n += new Vector3((a.Y - b.Y) * (a.Z + b.Z), (a.Z - b.Z) * (a.X + b.X), (a.X - b.X) * (a.Y + b.Y));
+            }
+
+            if (Vector3.Dot(n, outward) < 0f)
+            {
+                Array.Reverse(loop);
+            }
+
+            var polygon = new Polygon();
+            foreach (Vector3 v in loop)
+            {
+                if (!ids.TryGetValue(v, out short vertexId))
+                {
+                    vertexId = (short)ids.Count;
+                    ids.Add(v, vertexId);
+                    gfxObj.VertexArray.Vertices.Add((ushort)vertexId, new SWVertex { Origin = v });
+                }
+
+                polygon.VertexIds.Add(vertexId);
+            }
+
+            gfxObj.PhysicsPolygons.Add((ushort)gfxObj.PhysicsPolygons.Count, polygon);
+        }
+    }
+
     private static BuildingPortal Door(ushort cell) => new() { OtherCellId = cell };
 }

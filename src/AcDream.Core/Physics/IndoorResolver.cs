@@ -28,8 +28,9 @@ internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame fram
         q.Entry = entry;
         q.P0 = frame.Representable(lbX, lbY, new Vector2(q.Position.X, q.Position.Y) - frame.Origin(lbX, lbY));
         q.P1 = frame.Representable(lbX, lbY, q.P0 + q.Delta);
-        Landing landing = portals.FindLanding(ref q, Hop.Start(cellIndex));
         CellSurface cell = entry.Cells[cellIndex];
+        int start = cell.Objects.Length > 0 ? AboveTheCeiling(entry, cellIndex, q.P0, q.Z) : cellIndex;
+        Landing landing = portals.FindLanding(ref q, Hop.Start(start));
         if ((cell.Objects.Length > 0 || (landing.Kind == Arrival.Floor && entry.Cells[landing.CellIndex].Objects.Length > 0))
             && CrossesObjectWall(ref q, cell, landing, out Vector3 wall))
         {
@@ -76,6 +77,29 @@ internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame fram
         }
 
         return t <= 1f;
+    }
+
+    /// <summary>
+    /// The cell whose search a move starts in: the cell above when the mover's feet are at or above an
+    /// opening in its own cell's ceiling (a horizontal portal leading up, under the mover), which only an
+    /// object's floor (a stair rising through the opening) can lift it to; else its own cell. From there
+    /// the search still finds the object's floor down through the opening, and the floors beside it above.
+    /// </summary>
+    private static int AboveTheCeiling(LandblockEntry entry, int cellIndex, Vector2 p, float z)
+    {
+        ReadOnlySpan<PortalShape> shapes = entry.Cells[cellIndex].PortalShapes;
+        int[] targets = entry.PortalTargets[cellIndex];
+        for (int k = 0; k < shapes.Length; k++)
+        {
+            PortalShape shape = shapes[k];
+            if (shape.Kind == PortalKind.Horizontal && shape.OutNormal.Z > 0f && targets[k] >= 0
+                && shape.ContainsXY(p.X, p.Y) && z >= shape.PlaneZ(p.X, p.Y))
+            {
+                return targets[k];
+            }
+        }
+
+        return cellIndex;
     }
 
     /// <summary>Out of line, so Resolve's frame carries no string builder to zero on every call.</summary>

@@ -139,7 +139,10 @@ internal ref struct WallSet
 
             if (wall.IsUpright)
             {
-                BodySweep.SweepSegment(p, d, wall.A + offset, wall.B + offset, radius + wall.Radius, graze, ref t, ref normal, ref depth, ref outward);
+                // A cylinder (Radius > 0) is met at the sum of the radii, and so is its graze: the graze is
+                // measured from the contact radius, else every move coming no nearer the axis than the body's
+                // own graze was taken for a graze and the body walked into the trunk up to its own radius.
+                BodySweep.SweepSegment(p, d, wall.A + offset, wall.B + offset, radius + wall.Radius, graze + wall.Radius, ref t, ref normal, ref depth, ref outward);
             }
             else
             {
