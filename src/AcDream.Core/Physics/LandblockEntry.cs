@@ -17,8 +17,15 @@ internal sealed class LandblockEntry
 
     private readonly Dictionary<uint, int> _indexById;
 
-    public LandblockEntry(int x, int y, TerrainSurface terrain, CellSurface[] cells, ObjectSurface[] outdoorObjects)
+    /// <param name="x">Landblock X.</param>
+    /// <param name="y">Landblock Y.</param>
+    /// <param name="terrain">Its terrain.</param>
+    /// <param name="cells">Its cells, ascending ids (with their objects).</param>
+    /// <param name="outdoorObjects">Its own outdoor objects, then the neighbours' that reach over it (moved into its frame).</param>
+    /// <param name="ownObjects">How many of <paramref name="outdoorObjects"/> are its own.</param>
+    public LandblockEntry(int x, int y, TerrainSurface terrain, CellSurface[] cells, ObjectSurface[] outdoorObjects, int ownObjects)
     {
+        OwnObjectCount = ownObjects;
         X = x;
         Y = y;
         Terrain = terrain;
@@ -75,8 +82,19 @@ internal sealed class LandblockEntry
     /// </summary>
     public int[][] WallBuckets { get; }
 
-    /// <summary>The objects standing outdoors (a <c>LandBlockInfo</c>'s objects and building shells).</summary>
+    /// <summary>
+    /// The objects standing outdoors over this landblock, in its frame: its own (a <c>LandBlockInfo</c>'s
+    /// objects and building shells; the first <see cref="OwnObjectCount"/>), then those of its
+    /// neighbours whose bounds reach over it, moved into its frame.
+    /// </summary>
     public ObjectSurface[] OutdoorObjects { get; }
+
+    /// <summary>How many of <see cref="OutdoorObjects"/> are the landblock's own.</summary>
+    public int OwnObjectCount { get; }
+
+    /// <summary>This landblock with <paramref name="reaching"/> as the neighbours' objects over it (its own kept): a new entry.</summary>
+    public LandblockEntry WithNeighbourObjects(ObjectSurface[] reaching) =>
+        new(X, Y, Terrain, Cells, [.. OutdoorObjects.AsSpan(0, OwnObjectCount), .. reaching], OwnObjectCount);
 
     /// <summary>Per outdoor cell: the indices of the outdoor objects whose bounds overlap it (clamped to the landblock). A move looks only at these.</summary>
     public int[][] ObjectBuckets { get; }

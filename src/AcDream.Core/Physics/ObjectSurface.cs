@@ -31,8 +31,11 @@ public sealed class ObjectSurface
     private readonly FloorTriangle[] _floors;
     private readonly uint[] _doorCells;
 
+    private readonly Placed _placed;
+
     private ObjectSurface(uint objectId, uint cellId, Placed placed, bool isBuilding, uint[] doorCells)
     {
+        _placed = placed;
         ObjectId = objectId;
         CellId = CellIds.IsIndoor(cellId) ? cellId : 0;
         IsBuilding = isBuilding;
@@ -187,6 +190,12 @@ public sealed class ObjectSurface
 
         return result;
     }
+
+    /// <summary>
+    /// This object seen from a neighbouring landblock: its geometry moved by <paramref name="offset"/>
+    /// (this landblock's frame → the neighbour's), without door cells (they belong to this landblock).
+    /// </summary>
+    internal ObjectSurface Shifted(Vector2 offset) => new(ObjectId, 0, _placed.Shifted(new Vector3(offset, 0f)), IsBuilding, []);
 
     /// <summary>
     /// The floor of this object under (x, y) (landblock-local) that is highest without being more
@@ -357,6 +366,23 @@ public sealed class ObjectSurface
     /// <summary>The placed physics polygons (each with its winding normal) and cylinders of one object, landblock-local.</summary>
     private sealed class Placed(string name, Rigid frame)
     {
+        /// <summary>A copy moved by <paramref name="offset"/>.</summary>
+        public Placed Shifted(Vector3 offset)
+        {
+            var moved = new Placed(name, frame);
+            foreach ((ushort id, Vector3[] v, Vector3 n) in Polygons)
+            {
+                moved.Polygons.Add((id, Array.ConvertAll(v, p => p + offset), n));
+            }
+
+            foreach ((Vector3 b, float r, float h) in Cylinders)
+            {
+                moved.Cylinders.Add((b + offset, r, h));
+            }
+
+            return moved;
+        }
+
         public List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> Polygons { get; } = [];
 
         public List<(Vector3 Base, float Radius, float Height)> Cylinders { get; } = [];

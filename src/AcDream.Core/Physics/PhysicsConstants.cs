@@ -167,4 +167,11 @@ public static class PhysicsConstants
     /// polygons have 3 to 8; a cell with a longer non-floor polygon is rejected when built.
     /// </summary>
     public const int MaxWallPolygonVertices = 64;
+
+    /// <summary>
+    /// Most outdoor objects one landblock may register (its <c>LandBlockInfo</c>'s objects and
+    /// buildings): with those of its eight neighbours reaching over it, they stay below the body's
+    /// 65,536 object slots per landblock.
+    /// </summary>
+    public const int MaxOutdoorObjects = 7_000;
 }

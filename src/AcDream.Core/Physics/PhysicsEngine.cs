@@ -320,7 +320,67 @@ public sealed class PhysicsEngine
         }
 
         ObjectSurface[] outdoor = objects.Count == 0 ? [] : PlaceObjects(prefix, sorted, objects);
-        _registry.Set(new LandblockEntry(CellIds.LandblockX(landblockId), CellIds.LandblockY(landblockId), terrain, sorted, outdoor));
+        int x = CellIds.LandblockX(landblockId), y = CellIds.LandblockY(landblockId);
+        ObjectSurface[] reaching = ReachingOver(x, y);
+        _registry.Set(new LandblockEntry(x, y, terrain, sorted, [.. outdoor, .. reaching], outdoor.Length));
+        RefreshNeighbours(x, y);
+    }
+
+    /// <summary>
+    /// The outdoor objects of the eight neighbours of landblock (<paramref name="x"/>, <paramref name="y"/>)
+    /// whose bounds reach over it, moved into its frame (a fence on a seam is met from both sides).
+    /// </summary>
+    private ObjectSurface[] ReachingOver(int x, int y)
+    {
+        List<ObjectSurface>? reaching = null;
+        for (int dx = -1; dx <= 1; dx++)
+        {
+            for (int dy = -1; dy <= 1; dy++)
+            {
+                if ((dx, dy) == (0, 0) || _registry.Get(x + dx, y + dy) is not LandblockEntry neighbour)
+                {
+                    continue;
+                }
+
+                // The neighbour's frame → this one's: a point p there is p + offset here.
+                var offset = new Vector2(dx * PhysicsConstants.LandblockSize, dy * PhysicsConstants.LandblockSize);
+                for (int i = 0; i < neighbour.OwnObjectCount; i++)
+                {
+                    ObjectSurface o = neighbour.OutdoorObjects[i];
+                    if (o.BoundsMax.X + offset.X >= 0f && o.BoundsMin.X + offset.X <= PhysicsConstants.LandblockSize
+                        && o.BoundsMax.Y + offset.Y >= 0f && o.BoundsMin.Y + offset.Y <= PhysicsConstants.LandblockSize)
+                    {
+                        (reaching ??= []).Add(o.Shifted(offset));
+                    }
+                }
+            }
+        }
+
+        return reaching?.ToArray() ?? [];
+    }
+
+    /// <summary>
+    /// Republishes each neighbour of landblock (<paramref name="x"/>, <paramref name="y"/>) whose set of
+    /// objects reaching over it changed (this landblock was added, replaced or removed), each in one step.
+    /// </summary>
+    private void RefreshNeighbours(int x, int y)
+    {
+        for (int dx = -1; dx <= 1; dx++)
+        {
+            for (int dy = -1; dy <= 1; dy++)
+            {
+                if ((dx, dy) == (0, 0) || _registry.Get(x + dx, y + dy) is not LandblockEntry neighbour)
+                {
+                    continue;
+                }
+
+                ObjectSurface[] reaching = ReachingOver(x + dx, y + dy);
+                if (reaching.Length > 0 || neighbour.OutdoorObjects.Length > neighbour.OwnObjectCount)
+                {
+                    _registry.Set(neighbour.WithNeighbourObjects(reaching));
+                }
+            }
+        }
     }
 
     /// <summary>
@@ -357,10 +417,10 @@ public sealed class PhysicsEngine
             }
         }
 
-        if (outdoor.Count >= WallSet.ObjectFlag)
+        if (outdoor.Count > PhysicsConstants.MaxOutdoorObjects)
         {
             throw new ArgumentException(
-                $"landblock 0x{prefix | 0xFFFF:X8}: {outdoor.Count} objects outdoors; at most {WallSet.ObjectFlag - 1} are supported.", nameof(objects));
+                $"landblock 0x{prefix | 0xFFFF:X8}: {outdoor.Count} objects outdoors; at most {PhysicsConstants.MaxOutdoorObjects} are supported.", nameof(objects));
         }
 
         return [.. outdoor];
@@ -398,8 +458,15 @@ public sealed class PhysicsEngine
 
     /// <summary>Remove all surfaces for an unloaded landblock.</summary>
     /// <remarks>Any low 16 bits are accepted. Removing a landblock that is not registered does nothing, so an unload path may call it unconditionally. One writer thread at a time; resolvers may run meanwhile.</remarks>
-    public void RemoveLandblock(uint landblockId) =>
-        _registry.Remove(CellIds.LandblockX(landblockId), CellIds.LandblockY(landblockId));
+    public void RemoveLandblock(uint landblockId)
+    {
+        int x = CellIds.LandblockX(landblockId), y = CellIds.LandblockY(landblockId);
+        if (_registry.Get(x, y) is not null)
+        {
+            _registry.Remove(x, y);
+            RefreshNeighbours(x, y);
+        }
+    }
 
     /// <summary>
     /// Resolve a movement step. Given the entity's current world

@@ -10,10 +10,10 @@ namespace AcDream.Core.Physics;
 /// </summary>
 internal ref struct WallSet
 {
-    /// <summary>Marks an entry that is an outdoor object of its landblock (<see cref="LandblockEntry.OutdoorObjects"/>), not a cell.</summary>
-    public const int ObjectFlag = 0x8000;
+    /// <summary>Marks an entry that is an outdoor object of its landblock (<see cref="LandblockEntry.OutdoorObjects"/>), not a cell; indices stay below it.</summary>
+    public const int ObjectFlag = 0x10000;
 
-    private readonly Span<int> _cells; // slot << 16 | cell index, or | ObjectFlag | outdoor object index
+    private readonly Span<int> _cells; // slot << 17 | cell index (< 0x10000), or slot << 17 | ObjectFlag | outdoor object index
     private LandblockEntry? _slot0, _slot1, _slot2, _slot3;
     private Vector2 _offset0, _offset1, _offset2, _offset3;
     private int _slots;
@@ -51,7 +51,7 @@ internal ref struct WallSet
     /// <summary>Adds cell <paramref name="cellIndex"/> of slot <paramref name="slot"/> unless it is present; false (nothing added) when the set is full.</summary>
     public bool TryAdd(int slot, int cellIndex)
     {
-        int key = (slot << 16) | cellIndex;
+        int key = (slot << 17) | cellIndex;
         for (int i = 0; i < _count; i++)
         {
             if (_cells[i] == key)
@@ -70,7 +70,7 @@ internal ref struct WallSet
     }
 
     /// <summary>The cell at <paramref name="i"/> (insertion order) with its landblock slot.</summary>
-    public readonly (int Slot, int Cell) At(int i) => (_cells[i] >> 16, _cells[i] & 0xFFFF);
+    public readonly (int Slot, int Cell) At(int i) => (_cells[i] >> 17, _cells[i] & 0x1FFFF);
 
     /// <summary>Whether the box, moved into a landblock's frame by −<paramref name="offset"/>, overlaps the bounds given.</summary>
     public readonly bool Overlaps(Vector2 min, Vector2 max, Vector2 offset) =>

@@ -40,7 +40,7 @@ public class ObjectSeamCellAndHostTests
         }
     }
 
-    [Theory(Skip = "Known limitation, not fixed here: a landblock's objects are seen from a neighbour only when the move (or the body's box) crosses the seam; an object overhanging the seam by 1 m is walked through from the neighbour's side.")]
+    [Theory]
     [InlineData("point")]
     [InlineData("body")]
     public void A_wall_overhanging_the_seam_stops_a_mover_in_the_neighbour(string mover)
@@ -56,6 +56,51 @@ public class ObjectSeamCellAndHostTests
             at = engine.Resolve(at.Position, at.CellId, new Vector3(-0.1f, 0f, 0f), 0.6f, options);
             at.Position.X.Should().BeGreaterThan(193f + (mover == "body" ? 0.479f : 0f), $"{mover}, move {i}: {at}");
         }
+    }
+
+    [Theory]
+    [InlineData("point", true)]
+    [InlineData("point", false)]
+    [InlineData("body", true)]
+    [InlineData("body", false)]
+    public void A_wall_overhanging_the_seam_follows_its_landblock_in_and_out(string mover, bool neighbourFirst)
+    {
+        MovementOptions options = mover == "point" ? MovementOptions.Literal : new MovementOptions { Body = MoverBody.Player };
+        var engine = new PhysicsEngine();
+        var fence = new ObjectSurface(Fence(), ObjectKit.At(new Vector3(193f, 100f, 20f), 0f), 0);
+        if (neighbourFirst)
+        {
+            engine.AddLandblock(EastLb, TestData.FlatTerrain(20f, EastLb), []);
+            engine.AddLandblock(West, TestData.FlatTerrain(20f, West), [], [fence]);
+        }
+        else
+        {
+            engine.AddLandblock(West, TestData.FlatTerrain(20f, West), [], [fence]);
+            engine.AddLandblock(EastLb, TestData.FlatTerrain(20f, EastLb), []);
+        }
+
+        // The east landblock's local x 3 in the global frame; the fence stands at its local x 1.
+        Vector3 start = engine.ToWorld(EastLb, new Vector3(3f, 100f, 20f));
+        ResolveResult Walk()
+        {
+            var at = new ResolveResult(start, 0x51500000, true);
+            for (int i = 0; i < 30; i++)
+            {
+                at = engine.Resolve(at.Position, at.CellId, new Vector3(-0.1f, 0f, 0f), 0.6f, options);
+            }
+
+            return at;
+        }
+
+        float fenceX = engine.ToWorld(EastLb, new Vector3(1f, 0f, 0f)).X;
+        ResolveResult stopped = Walk();
+        stopped.Position.X.Should().BeGreaterThan(fenceX + (mover == "body" ? 0.479f : 0f), $"{mover}: the fence stops it: {stopped}");
+
+        engine.RemoveLandblock(West);
+        ResolveResult free = Walk();
+        free.Position.X.Should().BeLessThan(fenceX, $"{mover}: with the west landblock gone, so is its fence (the mover walks on to the seam): {free}");
+        engine.AddLandblock(West, TestData.FlatTerrain(20f, West), [], [fence]);
+        Walk().Should().Be(stopped, "the fence is back with its landblock");
     }
 
     [Theory]
