@@ -52,6 +52,33 @@ internal static class ObjectGeometry
     }
 
     /// <summary>
+    /// Whether any outdoor object of <paramref name="entry"/> is listed over the fine-grid squares of the
+    /// box of <paramref name="p0"/> → <paramref name="p1"/> grown by <see cref="NearMargin"/> (so rounding
+    /// the move into its landblock's frame never leaves a square out). False means every object question
+    /// about the move has no answer: no floor under its ends, no wall it crosses.
+    /// </summary>
+    public static bool AnyOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1)
+    {
+        Vector2 lo = Vector2.Min(p0, p1) - new Vector2(NearMargin), hi = Vector2.Max(p0, p1) + new Vector2(NearMargin);
+        int x0 = LandblockEntry.ObjectGridColumn(lo.X), x1 = LandblockEntry.ObjectGridColumn(hi.X);
+        int y0 = LandblockEntry.ObjectGridColumn(lo.Y), y1 = LandblockEntry.ObjectGridColumn(hi.Y);
+        int[] starts = entry.ObjectGridStarts;
+        for (int cx = x0; cx <= x1; cx++)
+        {
+            int k = (cx * LandblockEntry.ObjectGridSide) + y0;
+            if (starts[k] != starts[k + (y1 - y0) + 1])
+            {
+                return true; // squares k .. k + (y1 − y0) of this column list at least one object
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>Margin of <see cref="AnyOutdoors"/>, metres.</summary>
+    private const float NearMargin = 0.01f;
+
+    /// <summary>
     /// The first wall of <paramref name="objects"/> that the move <paramref name="p0"/> → <paramref name="p1"/>
     /// crosses at height <paramref name="h"/> (a point mover's feet plus its step: lower walls are steps),
     /// from either side: fraction <paramref name="t"/> along the move (only crossings before the
