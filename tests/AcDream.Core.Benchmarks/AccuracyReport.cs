@@ -23,6 +23,7 @@ internal static class AccuracyReport
         Slopes(o);
         DoorsOnly(o);
         BodyAccuracy.Run(o);
+        ObjectAccuracy.Run(o);
     }
 
     private static string F(double v, string format = "0.###") => v.ToString(format, Inv);

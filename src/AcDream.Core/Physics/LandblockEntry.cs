@@ -56,7 +56,14 @@ internal sealed class LandblockEntry
         EntryBuckets = BuildBuckets(cells, static c => c.HasFloor ? (c.FloorMin, c.FloorMax) : null);
         WallBuckets = BuildBuckets(cells, static c => c.Walls.Polygons.Length > 0 ? (c.Walls.Min, c.Walls.Max) : null);
         ObjectBuckets = BuildBuckets(outdoorObjects, static o => (new Vector2(o.BoundsMin.X, o.BoundsMin.Y), new Vector2(o.BoundsMax.X, o.BoundsMax.Y)));
+        (ObjectGridStarts, ObjectGridItems) = BuildObjectGrid(outdoorObjects);
     }
+
+    /// <summary>Squares per side of the outdoor objects' fine grid (<see cref="ObjectGridSize"/> metres each).</summary>
+    public const int ObjectGridSide = 48;
+
+    /// <summary>Side of a square of the outdoor objects' fine grid, metres.</summary>
+    public const float ObjectGridSize = PhysicsConstants.LandblockSize / ObjectGridSide;
 
     public int X { get; }
 
@@ -99,7 +106,86 @@ internal sealed class LandblockEntry
     /// <summary>Per outdoor cell: the indices of the outdoor objects whose bounds overlap it (clamped to the landblock). A move looks only at these.</summary>
     public int[][] ObjectBuckets { get; }
 
+    /// <summary>
+    /// The outdoor objects' fine grid (<see cref="ObjectGridSide"/>² squares of <see cref="ObjectGridSize"/> m,
+    /// compressed rows): the objects over square k (index column·side + row) are
+    /// <c>ObjectGridItems[ObjectGridStarts[k] .. ObjectGridStarts[k + 1]]</c>, those whose bounds (and floors'
+    /// bounds) overlap it, clamped to the landblock. A point mover's floor and wall questions look only
+    /// at these; empty when the landblock has no outdoor objects.
+    /// </summary>
+    public int[] ObjectGridStarts { get; }
+
+    /// <inheritdoc cref="ObjectGridStarts"/>
+    public int[] ObjectGridItems { get; }
+
+    /// <summary>The fine grid's column (or row) of a landblock-local coordinate, clamped to the landblock.</summary>
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    public static int ObjectGridColumn(float coordinate) =>
+        Math.Min((int)(Math.Clamp(coordinate, 0f, PhysicsConstants.LandblockSize) * (1f / ObjectGridSize)), ObjectGridSide - 1);
+
+    /// <summary>The outdoor objects over fine-grid square (<paramref name="column"/>, <paramref name="row"/>).</summary>
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    public ReadOnlySpan<int> ObjectsAt(int column, int row)
+    {
+        int k = (column * ObjectGridSide) + row;
+        int start = ObjectGridStarts[k];
+        return ObjectGridItems.AsSpan(start, ObjectGridStarts[k + 1] - start);
+    }
+
     public bool TryGetCellIndex(uint cellId, out int index) => _indexById.TryGetValue(cellId, out index);
+
+    /// <summary>The fine grid of <see cref="ObjectGridStarts"/>: each object over the squares its bounds and its floors' bounds (grown by the edge tolerance) cover.</summary>
+    private static (int[] Starts, int[] Items) BuildObjectGrid(ObjectSurface[] objects)
+    {
+        if (objects.Length == 0)
+        {
+            return ([], []);
+        }
+
+        const int n = ObjectGridSide;
+        var starts = new int[(n * n) + 1];
+        var boxes = new (int X0, int X1, int Y0, int Y1)[objects.Length];
+        for (int i = 0; i < objects.Length; i++)
+        {
+            ObjectSurface o = objects[i];
+            Vector2 min = new(o.BoundsMin.X, o.BoundsMin.Y), max = new(o.BoundsMax.X, o.BoundsMax.Y);
+            if (o.FloorMin.X <= o.FloorMax.X)
+            {
+                (min, max) = (Vector2.Min(min, o.FloorMin), Vector2.Max(max, o.FloorMax));
+            }
+
+            min -= new Vector2(PhysicsConstants.EdgeTolerance);
+            max += new Vector2(PhysicsConstants.EdgeTolerance);
+            boxes[i] = (ObjectGridColumn(min.X), ObjectGridColumn(max.X), ObjectGridColumn(min.Y), ObjectGridColumn(max.Y));
+            for (int cx = boxes[i].X0; cx <= boxes[i].X1; cx++)
+            {
+                for (int cy = boxes[i].Y0; cy <= boxes[i].Y1; cy++)
+                {
+                    starts[(cx * n) + cy + 1]++;
+                }
+            }
+        }
+
+        for (int k = 0; k < n * n; k++)
+        {
+            starts[k + 1] += starts[k];
+        }
+
+        var items = new int[starts[n * n]];
+        var next = starts[..(n * n)];
+        for (int i = 0; i < objects.Length; i++)
+        {
+            for (int cx = boxes[i].X0; cx <= boxes[i].X1; cx++)
+            {
+                for (int cy = boxes[i].Y0; cy <= boxes[i].Y1; cy++)
+                {
+                    items[next[(cx * n) + cy]++] = i;
+                }
+            }
+        }
+
+        return (starts, items);
+    }
 
     /// <summary>Per outdoor cell, the items whose bounds (from <paramref name="bounds"/>; null: none) overlap it.</summary>
     private static int[][] BuildBuckets<T>(T[] cells, Func<T, (Vector2 Min, Vector2 Max)?> bounds)

@@ -34,14 +34,15 @@ internal static class ObjectGeometry
 
     /// <summary>
     /// <see cref="Raise(ReadOnlySpan{ObjectSurface}, float, float, float, bool, ref float, out int)"/> over
-    /// the outdoor objects a landblock lists over the outdoor cell of (x, y).
+    /// the outdoor objects a landblock lists over the square of its fine grid (<see cref="LandblockEntry.ObjectsAt"/>) under (x, y).
     /// </summary>
     public static bool RaiseOutdoors(LandblockEntry entry, float x, float y, float ceilingZ, bool found, ref float z, out int objectIndex)
     {
         objectIndex = -1;
-        foreach (int i in entry.ObjectBuckets[CellIds.OutdoorCellNumberUnchecked(x, y) - 1])
+        ObjectSurface[] objects = entry.OutdoorObjects;
+        foreach (int i in entry.ObjectsAt(LandblockEntry.ObjectGridColumn(x), LandblockEntry.ObjectGridColumn(y)))
         {
-            if (entry.OutdoorObjects[i].TryFloorBelow(x, y, ceilingZ, out float floor) && (!found || floor > z))
+            if (objects[i].TryFloorBelow(x, y, ceilingZ, out float floor) && (!found || floor > z))
             {
                 (z, found, objectIndex) = (floor, true, i);
             }
@@ -49,6 +50,33 @@ internal static class ObjectGeometry
 
         return objectIndex >= 0;
     }
+
+    /// <summary>
+    /// Whether any outdoor object of <paramref name="entry"/> is listed over the fine-grid squares of the
+    /// box of <paramref name="p0"/> → <paramref name="p1"/> grown by <see cref="NearMargin"/> (so rounding
+    /// the move into its landblock's frame never leaves a square out). False means every object question
+    /// about the move has no answer: no floor under its ends, no wall it crosses.
+    /// </summary>
+    public static bool AnyOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1)
+    {
+        Vector2 lo = Vector2.Min(p0, p1) - new Vector2(NearMargin), hi = Vector2.Max(p0, p1) + new Vector2(NearMargin);
+        int x0 = LandblockEntry.ObjectGridColumn(lo.X), x1 = LandblockEntry.ObjectGridColumn(hi.X);
+        int y0 = LandblockEntry.ObjectGridColumn(lo.Y), y1 = LandblockEntry.ObjectGridColumn(hi.Y);
+        int[] starts = entry.ObjectGridStarts;
+        for (int cx = x0; cx <= x1; cx++)
+        {
+            int k = (cx * LandblockEntry.ObjectGridSide) + y0;
+            if (starts[k] != starts[k + (y1 - y0) + 1])
+            {
+                return true; // squares k .. k + (y1 − y0) of this column list at least one object
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>Margin of <see cref="AnyOutdoors"/>, metres.</summary>
+    private const float NearMargin = 0.01f;
 
     /// <summary>
     /// The first wall of <paramref name="objects"/> that the move <paramref name="p0"/> → <paramref name="p1"/>
@@ -78,20 +106,22 @@ internal static class ObjectGeometry
 
     /// <summary>
     /// <see cref="FirstCrossing(ReadOnlySpan{ObjectSurface}, Vector2, Vector2, float, ref float, ref Vector3, ref int)"/>
-    /// over the outdoor objects a landblock lists over the outdoor cells the move's box covers.
+    /// over the outdoor objects a landblock lists over the squares of its fine grid the move's box covers
+    /// (an object over several of them is tested again, with the same answer).
     /// </summary>
     public static void FirstCrossingOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1, float h, ref float t, ref Vector3 normal, ref int objectIndex)
     {
         Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
-        int x0 = CellIds.OutdoorColumn(lo.X), x1 = CellIds.OutdoorColumn(hi.X);
-        int y0 = CellIds.OutdoorColumn(lo.Y), y1 = CellIds.OutdoorColumn(hi.Y);
+        int x0 = LandblockEntry.ObjectGridColumn(lo.X), x1 = LandblockEntry.ObjectGridColumn(hi.X);
+        int y0 = LandblockEntry.ObjectGridColumn(lo.Y), y1 = LandblockEntry.ObjectGridColumn(hi.Y);
+        ObjectSurface[] objects = entry.OutdoorObjects;
         for (int cx = x0; cx <= x1; cx++)
         {
             for (int cy = y0; cy <= y1; cy++)
             {
-                foreach (int i in entry.ObjectBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
+                foreach (int i in entry.ObjectsAt(cx, cy))
                 {
-                    ObjectSurface o = entry.OutdoorObjects[i];
+                    ObjectSurface o = objects[i];
                     if (o.BoundsMin.X > hi.X || o.BoundsMax.X < lo.X || o.BoundsMin.Y > hi.Y || o.BoundsMax.Y < lo.Y
                         || !(o.BoundsMin.Z < h && o.BoundsMax.Z > h))
                     {

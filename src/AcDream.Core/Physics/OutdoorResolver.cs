@@ -40,7 +40,12 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         WorldFrame.Wrap(ref candidate.Y, ref toY);
         LandblockEntry? there = toX == lbX && toY == lbY ? here : registry.Get(toX, toY); // one read of each slot per call
         float groundHere = here.Terrain.SampleZUnchecked(local.X, local.Y);
-        if (here.OutdoorObjects.Length > 0)
+
+        // Objects are looked at only when one is listed over the fine-grid squares of the move's box
+        // (or the move crosses into a landblock with objects): a move away from every object takes
+        // the path of a landblock without objects, with the same answer.
+        bool objectsNear = here.OutdoorObjects.Length > 0 && ObjectGeometry.AnyOutdoors(here, local, local + delta);
+        if (objectsNear)
         {
             ObjectGeometry.RaiseOutdoors(here, local.X, local.Y, position.Z + q.StepUp, true, ref groundHere, out _);
         }
@@ -56,7 +61,7 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         q.P0 = candidate - delta; // the mover, in the candidate's landblock frame
         q.P1 = candidate;
         float terrainZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
-        if (there.OutdoorObjects.Length > 0 || here.OutdoorObjects.Length > 0)
+        if (objectsNear || (there != here && (there.OutdoorObjects.Length > 0 || here.OutdoorObjects.Length > 0)))
         {
             return AmongObjects(ref q, terrainZ);
         }
