@@ -39,6 +39,11 @@ internal static class ObjectGeometry
     public static bool RaiseOutdoors(LandblockEntry entry, float x, float y, float ceilingZ, bool found, ref float z, out int objectIndex)
     {
         objectIndex = -1;
+        if (entry.OutdoorObjects.Length == 0)
+        {
+            return false; // no grid
+        }
+
         ObjectSurface[] objects = entry.OutdoorObjects;
         foreach (int i in entry.ObjectsAt(LandblockEntry.ObjectGridColumn(x), LandblockEntry.ObjectGridColumn(y)))
         {
@@ -111,6 +116,11 @@ internal static class ObjectGeometry
     /// </summary>
     public static void FirstCrossingOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1, float h, ref float t, ref Vector3 normal, ref int objectIndex)
     {
+        if (entry.OutdoorObjects.Length == 0)
+        {
+            return; // no grid
+        }
+
         Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
         int x0 = LandblockEntry.ObjectGridColumn(lo.X), x1 = LandblockEntry.ObjectGridColumn(hi.X);
         int y0 = LandblockEntry.ObjectGridColumn(lo.Y), y1 = LandblockEntry.ObjectGridColumn(hi.Y);
