@@ -127,11 +127,6 @@ internal sealed class LandblockEntry
     [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
     public ReadOnlySpan<int> ObjectsAt(int column, int row)
     {
-        if (ObjectGridStarts.Length == 0)
-        {
-            return []; // no outdoor objects: the grid is empty (a move across a seam asks the landblock without them too)
-        }
-
         int k = (column * ObjectGridSide) + row;
         int start = ObjectGridStarts[k];
         return ObjectGridItems.AsSpan(start, ObjectGridStarts[k + 1] - start);
