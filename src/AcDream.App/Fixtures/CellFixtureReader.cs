@@ -67,7 +67,8 @@ public static class CellFixtureReader
         }
     }
 
-    private static void ReadPolygons(JsonElement list, Dictionary<ushort, Polygon> into, VertexArray vertexArray, Dictionary<Vector3, short> vertexIds)
+    /// <summary>Reads a fixture's polygon list (id, sidesType, vertices) into <paramref name="into"/>, sharing equal vertices through <paramref name="vertexIds"/>.</summary>
+    internal static void ReadPolygons(JsonElement list, Dictionary<ushort, Polygon> into, VertexArray vertexArray, Dictionary<Vector3, short> vertexIds)
     {
         foreach (JsonElement element in list.EnumerateArray())
         {
@@ -89,6 +90,7 @@ public static class CellFixtureReader
         }
     }
 
-    private static Vector3 ReadVector(JsonElement array) =>
+    /// <summary>A JSON array [x, y, z] as a vector.</summary>
+    internal static Vector3 ReadVector(JsonElement array) =>
         new(array[0].GetSingle(), array[1].GetSingle(), array[2].GetSingle());
 }

@@ -29,25 +29,7 @@ public static class ObjectFixtureReader
             };
             JsonElement sphere = root.GetProperty("boundingSphere");
             gfxObj.BoundingSphere = new Sphere { Origin = ReadVector(sphere.GetProperty("origin")), Radius = sphere.GetProperty("radius").GetSingle() };
-            var vertexIds = new Dictionary<Vector3, short>();
-            foreach (JsonElement element in root.GetProperty("physicsPolygons").EnumerateArray())
-            {
-                var polygon = new Polygon { SidesType = (CullMode)element.GetProperty("sidesType").GetInt32() };
-                foreach (JsonElement vertex in element.GetProperty("vertices").EnumerateArray())
-                {
-                    Vector3 position = ReadVector(vertex);
-                    if (!vertexIds.TryGetValue(position, out short id))
-                    {
-                        id = (short)vertexIds.Count;
-                        vertexIds.Add(position, id);
-                        gfxObj.VertexArray.Vertices.Add((ushort)id, new SWVertex { Origin = position });
-                    }
-
-                    polygon.VertexIds.Add(id);
-                }
-
-                gfxObj.PhysicsPolygons.Add(element.GetProperty("id").GetUInt16(), polygon);
-            }
+            CellFixtureReader.ReadPolygons(root.GetProperty("physicsPolygons"), gfxObj.PhysicsPolygons, gfxObj.VertexArray, []);
 
             return gfxObj;
         }
@@ -57,6 +39,5 @@ public static class ObjectFixtureReader
         }
     }
 
-    private static Vector3 ReadVector(JsonElement array) =>
-        new(array[0].GetSingle(), array[1].GetSingle(), array[2].GetSingle());
+    private static Vector3 ReadVector(JsonElement array) => CellFixtureReader.ReadVector(array);
 }

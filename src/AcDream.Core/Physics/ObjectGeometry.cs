@@ -95,14 +95,7 @@ internal static class ObjectGeometry
         Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
         for (int i = 0; i < objects.Length; i++)
         {
-            ObjectSurface o = objects[i];
-            if (o.BoundsMin.X > hi.X || o.BoundsMax.X < lo.X || o.BoundsMin.Y > hi.Y || o.BoundsMax.Y < lo.Y
-                || !(o.BoundsMin.Z < h && o.BoundsMax.Z > h))
-            {
-                continue;
-            }
-
-            if (FirstCrossing(o.Walls, p0, p1, lo, hi, h, ref t, ref normal))
+            if (Crosses(objects[i], p0, p1, lo, hi, h, ref t, ref normal))
             {
                 objectIndex = i;
             }
@@ -131,14 +124,7 @@ internal static class ObjectGeometry
             {
                 foreach (int i in entry.ObjectsAt(cx, cy))
                 {
-                    ObjectSurface o = objects[i];
-                    if (o.BoundsMin.X > hi.X || o.BoundsMax.X < lo.X || o.BoundsMin.Y > hi.Y || o.BoundsMax.Y < lo.Y
-                        || !(o.BoundsMin.Z < h && o.BoundsMax.Z > h))
-                    {
-                        continue;
-                    }
-
-                    if (FirstCrossing(o.Walls, p0, p1, lo, hi, h, ref t, ref normal))
+                    if (Crosses(objects[i], p0, p1, lo, hi, h, ref t, ref normal))
                     {
                         objectIndex = i;
                     }
@@ -146,6 +132,12 @@ internal static class ObjectGeometry
             }
         }
     }
+
+    /// <summary>Whether the move (box <paramref name="lo"/>–<paramref name="hi"/>) crosses a wall of <paramref name="o"/> at height <paramref name="h"/> before <paramref name="t"/>; the object's bounds reject it first.</summary>
+    private static bool Crosses(ObjectSurface o, Vector2 p0, Vector2 p1, Vector2 lo, Vector2 hi, float h, ref float t, ref Vector3 normal) =>
+        o.BoundsMin.X <= hi.X && o.BoundsMax.X >= lo.X && o.BoundsMin.Y <= hi.Y && o.BoundsMax.Y >= lo.Y
+        && o.BoundsMin.Z < h && o.BoundsMax.Z > h
+        && FirstCrossing(o.Walls, p0, p1, lo, hi, h, ref t, ref normal);
 
     private static bool FirstCrossing(CellWalls walls, Vector2 p0, Vector2 p1, Vector2 lo, Vector2 hi, float h, ref float t, ref Vector3 normal)
     {
