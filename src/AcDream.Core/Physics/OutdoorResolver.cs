@@ -39,17 +39,12 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         WorldFrame.Wrap(ref candidate.X, ref toX); // rounding can put it on the far seam
         WorldFrame.Wrap(ref candidate.Y, ref toY);
         LandblockEntry? there = toX == lbX && toY == lbY ? here : registry.Get(toX, toY); // one read of each slot per call
-        float groundHere = here.Terrain.SampleZUnchecked(local.X, local.Y);
+        float groundHere = here.Terrain.SampleZUnchecked(local.X, local.Y); // the terrain; objects on the rare paths (GroundHere)
 
         // Objects are looked at only when one is listed over the fine-grid squares of the move's box
         // (or the move crosses into a landblock with objects): a move away from every object takes
         // the path of a landblock without objects, with the same answer.
         bool objectsNear = here.OutdoorObjects.Length > 0 && ObjectGeometry.AnyOutdoors(here, local, local + delta);
-        if (objectsNear)
-        {
-            ObjectGeometry.RaiseOutdoors(here, local.X, local.Y, position.Z + q.StepUp, true, ref groundHere, out _);
-        }
-
         q.Stand = new Standing(lbX, lbY, local, groundHere, hereCellId);
         q.Here = here;
         if (there is null)
@@ -104,7 +99,7 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
     /// <summary>The move ends over cell <paramref name="cellIndex"/>'s floor at the ground there: entered, unless its edge is a step too high or (doors only) no door leads in.</summary>
     private ResolveResult EnterCell(ref MoveQuery q, int cellIndex, float floorZ)
     {
-        if (floorZ - q.Z > q.StepUp && floorZ - MathF.Max(q.Z, q.Stand.GroundZ) > q.StepUp)
+        if (floorZ - q.Z > q.StepUp && floorZ - MathF.Max(q.Z, GroundHere(ref q)) > q.StepUp)
         {
             return Refuse(ref q, ResolveOutcome.StepTooHigh); // the floor's edge is a step too high
         }
@@ -130,7 +125,7 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
             return Refuse(ref q, ResolveOutcome.OuterWall);
         }
 
-        if (terrainZ - q.Z > q.StepUp && terrainZ - MathF.Max(q.Z, q.Stand.GroundZ) > q.StepUp)
+        if (terrainZ - q.Z > q.StepUp && terrainZ - MathF.Max(q.Z, GroundHere(ref q)) > q.StepUp)
         {
             return Refuse(ref q, ResolveOutcome.StepTooHigh, there.Terrain.NormalUnchecked(q.P1.X, q.P1.Y));
         }
@@ -145,7 +140,23 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
 
     /// <summary>A refused move: the mover stays where it stands (<see cref="MoveQuery.Stand"/>), against the terrain's Z under it.</summary>
     private ResolveResult Refuse(ref MoveQuery q, ResolveOutcome why, Vector3 surface = default) =>
-        Answers.Refuse(in frame, q.Stand.X, q.Stand.Y, q.Stand.Local, q.Z, q.Stand.GroundZ, q.Stand.CellId, in q.Options, why, surface);
+        Answers.Refuse(in frame, q.Stand.X, q.Stand.Y, q.Stand.Local, q.Z, GroundHere(ref q), q.Stand.CellId, in q.Options, why, surface);
+
+    /// <summary>
+    /// The ground under the mover where it stands: the terrain there (<see cref="Standing.GroundZ"/>), or
+    /// an object's floor above it no more than a step above the feet. Asked only on the rare paths (a
+    /// rise beyond the step, a refusal), so a move among objects does not pay for it.
+    /// </summary>
+    private static float GroundHere(ref MoveQuery q)
+    {
+        float ground = q.Stand.GroundZ;
+        if (q.Here!.OutdoorObjects.Length > 0)
+        {
+            ObjectGeometry.RaiseOutdoors(q.Here, q.Stand.Local.X, q.Stand.Local.Y, q.Z + q.StepUp, true, ref ground, out _);
+        }
+
+        return ground;
+    }
 
     /// <summary>
     /// Outdoor entry: the floor, among the cells over the candidate's outdoor cell, nearest the
