@@ -77,6 +77,25 @@ public class ObjectHostTests
     }
 
     [Fact]
+    public void ApplyLoadedTerrain_CellarStairs_AreRegisteredInTheirCells()
+    {
+        var world = new HoltburgWorld(HoltburgWorld.Worlds.Holtburg, ["cellar-stairs"]);
+        var warnings = new List<string>();
+        using var window = new GameWindow(world, world.HeightTable, Holtburg, warnings.Add);
+
+        window.ApplyLoadedTerrainLocked(Holtburg, world.Load(Holtburg), out string? error).Should().BeTrue($"error: {error}");
+
+        warnings.Should().BeEmpty();
+        window.ObjectCounts[Holtburg].Should().Be(2, "one stair in each cellar");
+        world.Load(Holtburg).EnvCells.Single(c => c.Id == ObjectPlacements.CottageCellar).StaticObjects.Should().ContainSingle(o => o.Id == ObjectPlacements.CottageCellarStair);
+        window.Physics.TryGetGround(new Vector3(141.3f, 7.25f, 92f), ObjectPlacements.CottageCellar, 0.6f, out float z, out _, out uint objectId).Should().BeTrue();
+        objectId.Should().Be(ObjectPlacements.CottageCellarStair, "the stair stands in the cottage's cellar");
+        z.Should().BeInRange(92f, 93f, "half way up the ramp from 91 m to 94 m");
+        window.Physics.TryGetGround(new Vector3(141.3f, 7.25f, 92f), 0xA9B40001u, 0.6f, out _, out _, out uint outdoors).Should().BeTrue();
+        outdoors.Should().Be(0u, "a cell's object is not an outdoor one");
+    }
+
+    [Fact]
     public void UpdateStreaming_RegistersTheWorldsObjectsWithTheirLandblock()
     {
         var world = new HoltburgWorld(HoltburgWorld.Worlds.Staircase, ["staircase"]);
@@ -121,7 +140,9 @@ public class ObjectHostTests
         record.Samples.Should().Contain(s => s.FloorObjectId == ObjectPlacements.SmallBuilding, "the walk goes up the small building's ramp");
         record.Samples.Should().Contain(s => s.WallObjectId == ObjectPlacements.CottageShell, "the body slides along the shell at the west door");
         string summary = WalkReport.Format(record, "x.svg");
-        summary.Should().Contain("Objects: cottage, small-building (world holtburg); registered 2 in 0xA9B4.");
+        summary.Should().Contain("Objects: cottage, small-building, cellar-stairs (world holtburg); registered 4 in 0xA9B4.");
+        summary.Should().MatchRegex(@"Object floors stood on: [^\n]*0x01FFF147 cottage cellar stair: \d+ frames");
+        summary.Should().MatchRegex(@"Object floors stood on: [^\n]*0x01FFF174 building B cellar stair: \d+ frames");
         summary.Should().MatchRegex(@"Object floors stood on: [^\n]*0x01000F69 small building: \d+ frames");
         summary.Should().MatchRegex(@"Object walls met: [^\n]*0x01000A2B cottage shell: \d+ frames \(\d+ × slid");
     }
@@ -137,7 +158,7 @@ public class ObjectHostTests
 
         XElement objects = svg.Descendants(Svg + "g").Single(g => (string?)g.Attribute("id") == "objects");
         var groups = objects.Elements(Svg + "g").ToList();
-        groups.Select(g => (string?)g.Attribute("data-object-id")).Should().Equal("0x01000A2B", "0x01000F69");
+        groups.Select(g => (string?)g.Attribute("data-object-id")).Should().Equal("0x01000A2B", "0x01000F69", "0x01FFF147", "0x01FFF174");
         for (int i = 0; i < groups.Count; i++)
         {
             ObjectSurface surface = world.ObjectSurfaces[i];
@@ -147,7 +168,7 @@ public class ObjectHostTests
 
         groups[1].Elements().Count(e => (string?)e.Attribute("class") == "object-floor").Should().BePositive("the plinth and ramp are floors");
         objects.Attribute("stroke")!.Value.Should().NotBe("#555", "objects are drawn apart from the cells' walls");
-        svg.Descendants(Svg + "text").Should().Contain(t => t.Value.Contains("objects (0x01000A2B cottage shell, 0x01000F69 small building)"));
+        svg.Descendants(Svg + "text").Should().Contain(t => t.Value.Contains("objects (0x01000A2B cottage shell, 0x01000F69 small building, 0x01FFF147 cottage cellar stair, 0x01FFF174 building B cellar stair)"));
     }
 
     [Theory]

@@ -64,9 +64,9 @@ public class PlayerMovementModeTests
     [Fact]
     public void Update_SlopeRisingMoreThanTheStepPerStep_RefusedWhenRunningClimbedWhenWalking()
     {
-        // Vertex columns 0–1 at 0 m, 2–8 at 100 m: between x = 24 and 48 the ground rises 100 m in 24 m.
-        // Running (0.133 m a frame) that is 0.56 m a step, over the 0.5 m limit; walking, 0.28 m.
-        PhysicsEngine engine = Engine(Heights((x, _) => x >= 2 ? 100 : 0));
+        // Vertex columns 0–1 at 0 m, 2–8 at 120 m: between x = 24 and 48 the ground rises 120 m in 24 m.
+        // Running (0.133 m a frame) that is 0.67 m a step, over the 0.6 m limit; walking, 0.33 m.
+        PhysicsEngine engine = Engine(Heights((x, _) => x >= 2 ? 120 : 0));
         var runner = new PlayerMovementMode(engine, new Vector3(20f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
         var walker = new PlayerMovementMode(engine, new Vector3(20f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
         int refused = 0;
@@ -84,13 +84,13 @@ public class PlayerMovementModeTests
         runner.Position.X.Should().BeInRange(23.8f, 24f, "the runner stops at the foot of the slope");
         runner.Position.Z.Should().Be(0f);
         refused.Should().BeGreaterThan(50, "every later running step is refused");
-        last.LastRefusal.Should().Be(ResolveOutcome.StepTooHigh, "the engine's reason: the rise per step is over 0.5 m (no walkable-slope effect)");
-        Vector3 slope = Vector3.Normalize(new Vector3(-100f, 0f, 24f));
+        last.LastRefusal.Should().Be(ResolveOutcome.StepTooHigh, "the engine's reason: the rise per step is over 0.6 m (no walkable-slope effect)");
+        Vector3 slope = Vector3.Normalize(new Vector3(-120f, 0f, 24f));
         last.LastRefusalNormal.X.Should().BeApproximately(slope.X, 1e-4f, $"the slope's normal, got {last.LastRefusalNormal}");
         last.LastRefusalNormal.Y.Should().BeApproximately(0f, 1e-4f, $"got {last.LastRefusalNormal}");
         last.LastRefusalNormal.Z.Should().BeApproximately(slope.Z, 1e-4f, $"got {last.LastRefusalNormal}");
         walker.Position.X.Should().BeApproximately(20f + (3f * PlayerMovementMode.WalkSpeed), 1e-3f);
-        walker.Position.Z.Should().BeApproximately((walker.Position.X - 24f) * 100f / 24f, 1e-3f, "the walker is on the slope");
+        walker.Position.Z.Should().BeApproximately((walker.Position.X - 24f) * 120f / 24f, 1e-3f, "the walker is on the slope");
     }
 
     [Fact]

@@ -35,8 +35,8 @@ public sealed class PlayerMovementMode
     /// <summary>Turning speed: π/2 rad/s (90° per second).</summary>
     public const float TurnRate = MathF.PI / 2f;
 
-    /// <summary>Highest rise one step may climb: 0.5 m (acdream's player uses 0.4–0.6 m).</summary>
-    public const float StepUpHeight = 0.5f;
+    /// <summary>Highest rise one step may climb: 0.6 m, the player's step up (issue 11; acdream's player uses 0.4–0.6 m).</summary>
+    public const float StepUpHeight = 0.6f;
 
     /// <summary>Gravity: −9.8 m/s² along Z.</summary>
     public const float Gravity = -9.8f;

@@ -33,6 +33,7 @@ internal sealed class HoltburgWorld : ILandblockSource
     {
         ["cottage"] = Worlds.Holtburg,
         ["small-building"] = Worlds.Holtburg,
+        ["cellar-stairs"] = Worlds.Holtburg,
         ["staircase"] = Worlds.Staircase,
     };
 
@@ -125,6 +126,14 @@ internal sealed class HoltburgWorld : ILandblockSource
                     case "staircase":
                         _info.Objects.AddRange(ObjectPlacements.StaircaseInfo().Objects);
                         break;
+                    case "cellar-stairs":
+                        foreach ((uint cellId, GfxObj stair, Stab placement) in ObjectPlacements.CellarStairs())
+                        {
+                            _cells.Single(c => c.CellId == cellId).EnvCell.StaticObjects.Add(placement);
+                            all[stair.Id] = stair;
+                        }
+
+                        break;
                 }
             }
 
@@ -159,6 +168,8 @@ internal sealed class HoltburgWorld : ILandblockSource
         ObjectPlacements.CottageShell => "cottage shell",
         ObjectPlacements.SmallBuilding => "small building",
         ObjectPlacements.StairPiece => "stair piece",
+        ObjectPlacements.CottageCellarStair => "cottage cellar stair",
+        ObjectPlacements.BuildingBCellarStair => "building B cellar stair",
         _ => null,
     };
 
