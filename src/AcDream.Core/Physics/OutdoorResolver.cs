@@ -55,27 +55,32 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         q.Entry = there;
         q.P0 = candidate - delta; // the mover, in the candidate's landblock frame
         q.P1 = candidate;
-        float terrainZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
+        float groundZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
+        bool onObject = false;
         if (objectsNear || (there != here && (there.OutdoorObjects.Length > 0 || here.OutdoorObjects.Length > 0)))
         {
-            return AmongObjects(ref q, terrainZ);
+            // Among objects: refused at the first object wall the move crosses at the feet plus the step
+            // (a shell's is the building's outer wall); else it ends on the highest floor under the end
+            // point no more than the step above the feet, the terrain or an object's, and goes on below.
+            if (CrossesObjectWall(ref q, out ResolveOutcome why, out Vector3 wallNormal))
+            {
+                return Refuse(ref q, why, wallNormal);
+            }
+
+            onObject = ObjectFloor(there, candidate, position.Z + q.StepUp, ref groundZ);
         }
 
-        return TryEnterCell(there, candidate, terrainZ, q.StepUp, out int cellIndex, out float floorZ)
+        return TryEnterCell(there, candidate, groundZ, q.StepUp, out int cellIndex, out float floorZ)
             ? EnterCell(ref q, cellIndex, floorZ)
-            : WalkTerrain(ref q, terrainZ, onObject: false);
+            : WalkTerrain(ref q, groundZ, onObject);
     }
 
-    /// <summary>
-    /// The move among objects: refused at the first object wall it crosses at the feet plus the step (a
-    /// shell's is the building's outer wall); else it ends on the highest floor under the end point no
-    /// more than the step above the feet, the terrain or an object's, and goes on as without objects.
-    /// </summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a landblock without objects pays nothing for it
-    private ResolveResult AmongObjects(ref MoveQuery q, float terrainZ)
+    /// <summary>Whether the move crosses an object's wall (of the landblock it ends in, or of its own across a seam) at the feet plus the step; the outcome and the wall's normal.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a move away from objects pays nothing for it
+    private static bool CrossesObjectWall(ref MoveQuery q, out ResolveOutcome why, out Vector3 normal)
     {
         float h = q.Z + q.StepUp, t = 2f;
-        Vector3 normal = default;
+        normal = default;
         int there = -1, here = -1;
         ObjectGeometry.FirstCrossingOutdoors(q.Entry, q.P0, q.P1, h, ref t, ref normal, ref there);
         if (q.Here != q.Entry)
@@ -84,17 +89,14 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         }
 
         ObjectSurface? wall = here >= 0 ? q.Here!.OutdoorObjects[here] : there >= 0 ? q.Entry.OutdoorObjects[there] : null;
-        if (wall is not null)
-        {
-            return Refuse(ref q, wall.IsBuilding ? ResolveOutcome.OuterWall : ResolveOutcome.Wall, normal);
-        }
-
-        float groundZ = terrainZ;
-        bool onObject = ObjectGeometry.RaiseOutdoors(q.Entry, q.P1.X, q.P1.Y, h, true, ref groundZ, out _);
-        return TryEnterCell(q.Entry, q.P1, groundZ, q.StepUp, out int cellIndex, out float floorZ)
-            ? EnterCell(ref q, cellIndex, floorZ)
-            : WalkTerrain(ref q, groundZ, onObject);
+        why = wall is { IsBuilding: true } ? ResolveOutcome.OuterWall : ResolveOutcome.Wall;
+        return wall is not null;
     }
+
+    /// <summary>Raises <paramref name="groundZ"/> to an object's floor at <paramref name="p"/> no higher than <paramref name="ceilingZ"/>; whether it did.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve, whose inlining budget its loop would use up
+    private static bool ObjectFloor(LandblockEntry entry, Vector2 p, float ceilingZ, ref float groundZ) =>
+        ObjectGeometry.RaiseOutdoors(entry, p.X, p.Y, ceilingZ, true, ref groundZ, out _);
 
     /// <summary>The move ends over cell <paramref name="cellIndex"/>'s floor at the ground there: entered, unless its edge is a step too high or (doors only) no door leads in.</summary>
     private ResolveResult EnterCell(ref MoveQuery q, int cellIndex, float floorZ)
