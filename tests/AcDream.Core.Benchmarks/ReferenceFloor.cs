@@ -97,7 +97,8 @@ internal sealed class ReferenceFloor
         return (a.X + (s * (b.X - a.X)), a.Y + (s * (b.Y - a.Y)));
     }
 
-    private static double Segment(double px, double py, (double X, double Y, double Z) a, (double X, double Y, double Z) b)
+    /// <summary>Distance, seen from above, from (px, py) to the segment a–b.</summary>
+    internal static double Segment(double px, double py, (double X, double Y, double Z) a, (double X, double Y, double Z) b)
     {
         double dx = b.X - a.X, dy = b.Y - a.Y;
         double l2 = (dx * dx) + (dy * dy);

@@ -108,20 +108,11 @@ internal sealed class ReferenceObjectFloor
         {
             for (int i = 0; i < f.Vertices.Length; i++)
             {
-                best = Math.Min(best, Segment(x, y, f.Vertices[i], f.Vertices[(i + 1) % f.Vertices.Length]));
+                best = Math.Min(best, ReferenceFloor.Segment(x, y, f.Vertices[i], f.Vertices[(i + 1) % f.Vertices.Length]));
             }
         }
 
         return best;
-    }
-
-    private static double Segment(double px, double py, (double X, double Y, double Z) a, (double X, double Y, double Z) b)
-    {
-        double dx = b.X - a.X, dy = b.Y - a.Y;
-        double l2 = (dx * dx) + (dy * dy);
-        double s = l2 > 0 ? Math.Clamp((((px - a.X) * dx) + ((py - a.Y) * dy)) / l2, 0, 1) : 0;
-        double ex = px - (a.X + (s * dx)), ey = py - (a.Y + (s * dy));
-        return Math.Sqrt((ex * ex) + (ey * ey));
     }
 
     private sealed record Floor((double X, double Y, double Z)[] Vertices, (double X, double Y, double Z) Normal, (double X, double Y, double Z) Mean)
