@@ -96,12 +96,20 @@ public class BodyAllocationTests(ITestOutputHelper output)
                 }
             }
 
+            // Then up to three counted passes: a per-call allocation shows in every pass; the runtime's
+            // own one-time work (a late tier-up, seen once in a full-suite run on a loaded machine, as in
+            // MovementOptionsTests) in one at most, so the quietest pass must be 0 B.
             float sink = Run(call);
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            sink += Run(call);
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-            output.WriteLine($"{name}: {allocated} B over {Calls} resolves; outcomes {string.Join(", ", outcomes.Select(kv => $"{kv.Key} {kv.Value}"))} (sink {sink})");
-            allocated.Should().Be(0, $"{Calls} body resolves ({name}) allocated {allocated} bytes");
+            var passes = new List<long>();
+            for (int pass = 0; pass < 3 && (passes.Count == 0 || passes[^1] != 0); pass++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                sink += Run(call);
+                passes.Add(GC.GetAllocatedBytesForCurrentThread() - before);
+            }
+
+            output.WriteLine($"{name}: {string.Join(", ", passes)} B over {Calls} resolves per pass; outcomes {string.Join(", ", outcomes.Select(kv => $"{kv.Key} {kv.Value}"))} (sink {sink})");
+            passes.Min().Should().Be(0, $"{Calls} body resolves ({name}) allocated {string.Join(", ", passes)} bytes in successive passes");
         }
     }
 
