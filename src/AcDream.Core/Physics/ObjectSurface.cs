@@ -81,10 +81,10 @@ public sealed class ObjectSurface
 
     /// <summary>A GfxObj placed by <paramref name="frame"/> (object-local → landblock-local).</summary>
     /// <param name="gfxObj">The object; its <c>PhysicsPolygons</c> and <c>VertexArray</c> are read.</param>
-    /// <param name="frame">Its placement.</param>
-    /// <param name="cellId">0 outdoors, or the indoor cell it stands in.</param>
+    /// <param name="frame">Its placement, object-local → landblock-local metres (a <see cref="Stab.Frame"/>); the orientation is normalised.</param>
+    /// <param name="cellId">0 (or any outdoor cell id) outdoors, or the indoor cell it stands in.</param>
     /// <exception cref="ArgumentNullException">An argument, or a list inside it, is null.</exception>
-    /// <exception cref="ArgumentException">The id is not a GfxObj id (0x01xxxxxx); the frame is not finite or its orientation is zero; a polygon has fewer than three vertices, names an unknown vertex, has a non-finite vertex or one placed farther than <see cref="PhysicsConstants.MaxCellCoordinate"/> from the landblock; the message names the object and what is wrong.</exception>
+    /// <exception cref="ArgumentException">The id is not a GfxObj id (0x01xxxxxx); the frame is not finite or its orientation is shorter than 1e-6; a polygon has fewer than three vertices, names an unknown vertex, has a non-finite vertex or one placed farther than <see cref="PhysicsConstants.MaxCellCoordinate"/> from the landblock; the message names the object and what is wrong.</exception>
     public ObjectSurface(GfxObj gfxObj, Frame frame, uint cellId)
         : this(CheckedId(gfxObj, g => g.Id, 0x01), cellId, Place(gfxObj, frame), isBuilding: false, [])
     {
@@ -93,10 +93,10 @@ public sealed class ObjectSurface
     /// <summary>A Setup placed by <paramref name="frame"/>: every part (found in <paramref name="gfxObjs"/>) and every cylinder.</summary>
     /// <param name="setup">The setup; its parts, default scales, default pose and cylinders are read.</param>
     /// <param name="gfxObjs">The GfxObjs by id; every part must be there.</param>
-    /// <param name="frame">Its placement.</param>
-    /// <param name="cellId">0 outdoors, or the indoor cell it stands in.</param>
+    /// <param name="frame">Its placement, setup-local → landblock-local metres (a <see cref="Stab.Frame"/>); the orientation is normalised.</param>
+    /// <param name="cellId">0 (or any outdoor cell id) outdoors, or the indoor cell it stands in.</param>
     /// <exception cref="ArgumentNullException">An argument, or a list inside it, is null.</exception>
-    /// <exception cref="ArgumentException">As for a GfxObj; also a part missing from <paramref name="gfxObjs"/>, a pose or scale list of the wrong length, or a cylinder with a non-finite or negative size.</exception>
+    /// <exception cref="ArgumentException">The id is not a Setup id (0x02xxxxxx); as for a GfxObj (for the frame and for each part's polygons); also a part missing from <paramref name="gfxObjs"/>, a pose or scale list of the wrong length, a non-finite part scale or a part frame of the default pose that is not a placement, or a cylinder with a non-finite origin or a non-finite or negative size.</exception>
     public ObjectSurface(Setup setup, IReadOnlyDictionary<uint, GfxObj> gfxObjs, Frame frame, uint cellId)
         : this(CheckedId(setup, s => s.Id, 0x02), cellId, Place(setup, gfxObjs, frame), isBuilding: false, [])
     {
@@ -140,7 +140,8 @@ public sealed class ObjectSurface
     /// <param name="cells">Its indoor cells (their <c>Id</c> must be set).</param>
     /// <param name="gfxObjs">The GfxObjs by id.</param>
     /// <param name="setups">The Setups by id.</param>
-    /// <exception cref="ArgumentException">An object is bad or missing (see the constructors).</exception>
+    /// <exception cref="ArgumentNullException"><paramref name="cells"/>, <paramref name="gfxObjs"/> or <paramref name="setups"/> is null, or a stab, a building, a frame or a list inside a model or building is null (null cells and null object lists are skipped).</exception>
+    /// <exception cref="ArgumentException">An object's id is neither a GfxObj (0x01xxxxxx) nor a Setup (0x02xxxxxx) id or is not among those given, its model is bad (see the constructors), or a building's portal names a door cell outside 0x0100..0xFFFD; the message names the object.</exception>
     public static List<ObjectSurface> FromLandblock(
         uint landblockId, LandBlockInfo? info, IReadOnlyList<EnvCell> cells, IReadOnlyDictionary<uint, GfxObj> gfxObjs, IReadOnlyDictionary<uint, Setup> setups)
     {

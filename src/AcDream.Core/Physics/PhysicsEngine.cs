@@ -103,13 +103,14 @@ public sealed class PhysicsEngine
     /// <summary>
     /// The ground under a world position: for an outdoor <paramref name="cellId"/> (or 0) the terrain
     /// of the landblock under the position; for an indoor one, that cell's floor nearest the position's
-    /// Z. The same surfaces, sampled the same way, as <c>Resolve</c>.
+    /// Z; in either case raised to an object's floor that lies above it and no higher than the position's
+    /// Z (the step-height overload with a step of 0). The same surfaces, sampled the same way, as <c>Resolve</c>.
     /// </summary>
     /// <param name="worldPosition">World metres; Z is the reference for stacked floors.</param>
     /// <param name="cellId">The cell the position is in (<c>0xXXYYCCCC</c>), or an outdoor id / 0 for the terrain.</param>
     /// <param name="groundZ">The ground's Z, metres.</param>
     /// <param name="normal">The ground's unit normal (pointing up).</param>
-    /// <returns>False when the landblock is not loaded, the cell is unknown, or no floor of the cell lies under the position.</returns>
+    /// <returns>False when the landblock is not loaded, the cell is unknown, or neither a floor of the cell nor an object's floor lies under the position.</returns>
     /// <exception cref="ArgumentException">A coordinate is not finite.</exception>
     public bool TryGetGround(Vector3 worldPosition, uint cellId, out float groundZ, out Vector3 normal) =>
         TryGetGround(worldPosition, cellId, 0f, out groundZ, out normal, out _);
