@@ -279,7 +279,7 @@ public sealed class PhysicsEngine
     /// <param name="cells">Its indoor cells (may be empty).</param>
     /// <param name="objects">Its objects (may be empty), landblock-local.</param>
     /// <exception cref="ArgumentNullException">An argument, a cell or an object is null.</exception>
-    /// <exception cref="ArgumentException">As the three-argument call; or an object stands in a cell that is not among <paramref name="cells"/>, or a building's door cell is not among them.</exception>
+    /// <exception cref="ArgumentException">As the three-argument call; or an object stands in a cell that is not among <paramref name="cells"/>, a building's door cell is not among them, or more than <see cref="PhysicsConstants.MaxOutdoorObjects"/> objects stand outdoors.</exception>
     public void AddLandblock(
         uint landblockId,
         TerrainSurface terrain,
