@@ -22,7 +22,7 @@ internal static class SceneReader
     /// <summary>Longest leg, seconds.</summary>
     public const float MaxLegSeconds = 600f;
 
-    /// <summary>How far from 0xA9B4's corner a start may be, metres: the 3 × 3 landblocks around Holtburg and one more ring (the world is bigger, the walk is not).</summary>
+    /// <summary>How far a start may be from the centre landblock's middle (96, 96), metres, along X and along Y: the 3 × 3 landblocks around Holtburg and one more ring (the world is bigger, the walk is not).</summary>
     public const float MaxStartDistance = 2 * PhysicsConstants.LandblockSize;
 
     private static readonly string[] SceneFields = ["name", "world", "objects", "start", "legs", "notes", "effects"];
