@@ -198,9 +198,14 @@ public sealed class PhysicsEngine
     /// <exception cref="ArgumentException">A coordinate or the reach is not finite, or the reach is negative.</exception>
     public uint ObjectWallNear(Vector3 worldPosition, uint cellId, float reach)
     {
-        if (!IsFinite(worldPosition) || !float.IsFinite(reach) || reach < 0f)
+        if (!IsFinite(worldPosition))
         {
-            throw new ArgumentException($"world position {worldPosition} and reach {reach} must be finite, the reach ≥ 0.", nameof(worldPosition));
+            throw new ArgumentException($"world position {worldPosition} must be finite.", nameof(worldPosition));
+        }
+
+        if (!float.IsFinite(reach) || reach < 0f)
+        {
+            throw new ArgumentException($"reach {reach} must be finite and ≥ 0.", nameof(reach));
         }
 
         ObjectSurface[] objects;
