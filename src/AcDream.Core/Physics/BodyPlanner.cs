@@ -137,7 +137,14 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         return PhysicsConstants.BodySkin + (2f * (MathF.BitIncrement(largest) - largest));
     }
 
-    /// <summary>Outdoors: whether any cell's walls over the outdoor squares the box (<paramref name="centre"/> ± <paramref name="reach"/>) covers overlap it.</summary>
+    /// <summary>
+    /// Outdoors: whether any cell's or outdoor object's walls near the box (<paramref name="centre"/> ±
+    /// <paramref name="reach"/>) overlap it: what <see cref="GatherOutdoors"/> would gather, asked on its own.
+    /// </summary>
+    /// <remarks>
+    /// Not written as <see cref="GatherOutdoors"/> into a set with no room: forming that set on every
+    /// open-ground move cost the body alone 1.3× → 1.86× of <c>Player</c> without a body (measured).
+    /// </remarks>
     private static bool AnyWallNear(LandblockEntry entry, Vector2 centre, float reach)
     {
         Vector2 min = centre - new Vector2(reach), max = centre + new Vector2(reach);
@@ -147,20 +154,31 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         {
             for (int cy = y0; cy <= y1; cy++)
             {
-                int bucket = (cx * PhysicsConstants.CellsPerSide) + cy;
-                foreach (int cell in entry.WallBuckets[bucket])
+                foreach (int cell in entry.WallBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
                 {
-                    CellWalls walls = entry.Cells[cell].Walls;
-                    if (walls.Min.X <= max.X && walls.Max.X >= min.X && walls.Min.Y <= max.Y && walls.Max.Y >= min.Y)
+                    if (Overlap(entry.Cells[cell].Walls, min, max))
                     {
                         return true;
                     }
                 }
+            }
+        }
 
-                foreach (int o in entry.ObjectBuckets[bucket])
+        return entry.OutdoorObjects.Length > 0 && AnyObjectWallNear(entry, min, max);
+    }
+
+    /// <summary>Whether an outdoor object listed over the fine-grid squares of the box has walls overlapping it.</summary>
+    private static bool AnyObjectWallNear(LandblockEntry entry, Vector2 min, Vector2 max)
+    {
+        int x0 = LandblockEntry.ObjectGridColumn(min.X), x1 = LandblockEntry.ObjectGridColumn(max.X);
+        int y0 = LandblockEntry.ObjectGridColumn(min.Y), y1 = LandblockEntry.ObjectGridColumn(max.Y);
+        for (int cx = x0; cx <= x1; cx++)
+        {
+            for (int cy = y0; cy <= y1; cy++)
+            {
+                foreach (int o in entry.ObjectsAt(cx, cy))
                 {
-                    CellWalls walls = entry.OutdoorObjects[o].Walls;
-                    if (walls.Min.X <= max.X && walls.Max.X >= min.X && walls.Min.Y <= max.Y && walls.Max.Y >= min.Y)
+                    if (Overlap(entry.OutdoorObjects[o].Walls, min, max))
                     {
                         return true;
                     }
@@ -170,6 +188,9 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
 
         return false;
     }
+
+    private static bool Overlap(CellWalls walls, Vector2 min, Vector2 max) =>
+        walls.Min.X <= max.X && walls.Max.X >= min.X && walls.Min.Y <= max.Y && walls.Max.Y >= min.Y;
 
     /// <summary>Whether the box reaches across one of the landblock's seams (a neighbour's walls may be in it).</summary>
     private static bool NearSeam(Vector2 centre, float reach) =>
@@ -195,15 +216,19 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         }
     }
 
-    /// <summary>The cells of a landblock listed over the outdoor squares the move's box covers, whose walls the box overlaps.</summary>
-    private static void GatherOutdoors(ref WallSet walls, int slot, LandblockEntry entry)
+    /// <summary>
+    /// The cells of a landblock listed over the outdoor squares the move's box covers, and its outdoor
+    /// objects listed over the fine-grid squares it covers, whose walls the box overlaps. False when the
+    /// set filled (the nearest are in).
+    /// </summary>
+    private static bool GatherOutdoors(ref WallSet walls, int slot, LandblockEntry entry)
     {
         (_, Vector2 offset) = walls.Slot(slot);
         Vector2 min = walls.BoxMin - offset, max = walls.BoxMax - offset;
         if (max.X < -PhysicsConstants.LandblockSize || max.Y < -PhysicsConstants.LandblockSize
             || min.X > 2 * PhysicsConstants.LandblockSize || min.Y > 2 * PhysicsConstants.LandblockSize)
         {
-            return;
+            return true;
         }
 
         int x0 = CellIds.OutdoorColumn(min.X), x1 = CellIds.OutdoorColumn(max.X);
@@ -212,26 +237,42 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         {
             for (int cy = y0; cy <= y1; cy++)
             {
-                int bucket = (cx * PhysicsConstants.CellsPerSide) + cy;
-                foreach (int cell in entry.WallBuckets[bucket])
+                foreach (int cell in entry.WallBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
                 {
                     CellWalls cellWalls = entry.Cells[cell].Walls;
                     if (walls.Overlaps(cellWalls.Min, cellWalls.Max, offset) && !walls.TryAdd(slot, cell))
                     {
-                        return;
-                    }
-                }
-
-                foreach (int o in entry.ObjectBuckets[bucket])
-                {
-                    CellWalls objectWalls = entry.OutdoorObjects[o].Walls;
-                    if (walls.Overlaps(objectWalls.Min, objectWalls.Max, offset) && !walls.TryAdd(slot, WallSet.ObjectFlag | o))
-                    {
-                        return;
+                        return false;
                     }
                 }
             }
         }
+
+        if (entry.OutdoorObjects.Length == 0)
+        {
+            return true;
+        }
+
+        x0 = LandblockEntry.ObjectGridColumn(min.X);
+        x1 = LandblockEntry.ObjectGridColumn(max.X);
+        y0 = LandblockEntry.ObjectGridColumn(min.Y);
+        y1 = LandblockEntry.ObjectGridColumn(max.Y);
+        for (int cx = x0; cx <= x1; cx++)
+        {
+            for (int cy = y0; cy <= y1; cy++)
+            {
+                foreach (int o in entry.ObjectsAt(cx, cy))
+                {
+                    CellWalls objectWalls = entry.OutdoorObjects[o].Walls;
+                    if (walls.Overlaps(objectWalls.Min, objectWalls.Max, offset) && !walls.TryAdd(slot, WallSet.ObjectFlag | o))
+                    {
+                        return false;
+                    }
+                }
+            }
+        }
+
+        return true;
     }
 
     /// <summary>Outdoors near a seam: the neighbour landblocks the move's box reaches into, each in its offset.</summary>

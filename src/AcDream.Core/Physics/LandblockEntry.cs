@@ -55,7 +55,6 @@ internal sealed class LandblockEntry
 
         EntryBuckets = BuildBuckets(cells, static c => c.HasFloor ? (c.FloorMin, c.FloorMax) : null);
         WallBuckets = BuildBuckets(cells, static c => c.Walls.Polygons.Length > 0 ? (c.Walls.Min, c.Walls.Max) : null);
-        ObjectBuckets = BuildBuckets(outdoorObjects, static o => (new Vector2(o.BoundsMin.X, o.BoundsMin.Y), new Vector2(o.BoundsMax.X, o.BoundsMax.Y)));
         (ObjectGridStarts, ObjectGridItems) = BuildObjectGrid(outdoorObjects);
     }
 
@@ -103,15 +102,12 @@ internal sealed class LandblockEntry
     public LandblockEntry WithNeighbourObjects(ObjectSurface[] reaching) =>
         new(X, Y, Terrain, Cells, [.. OutdoorObjects.AsSpan(0, OwnObjectCount), .. reaching], OwnObjectCount);
 
-    /// <summary>Per outdoor cell: the indices of the outdoor objects whose bounds overlap it (clamped to the landblock). A move looks only at these.</summary>
-    public int[][] ObjectBuckets { get; }
-
     /// <summary>
     /// The outdoor objects' fine grid (<see cref="ObjectGridSide"/>² squares of <see cref="ObjectGridSize"/> m,
     /// compressed rows): the objects over square k (index column·side + row) are
     /// <c>ObjectGridItems[ObjectGridStarts[k] .. ObjectGridStarts[k + 1]]</c>, those whose bounds (and floors'
-    /// bounds) overlap it, clamped to the landblock. A point mover's floor and wall questions look only
-    /// at these; empty when the landblock has no outdoor objects.
+    /// bounds) overlap it, clamped to the landblock. A point mover's floor and wall questions and the
+    /// body's gathering of object walls look only at these; empty when the landblock has no outdoor objects.
     /// </summary>
     public int[] ObjectGridStarts { get; }
 
@@ -188,7 +184,7 @@ internal sealed class LandblockEntry
     }
 
     /// <summary>Per outdoor cell, the items whose bounds (from <paramref name="bounds"/>; null: none) overlap it.</summary>
-    private static int[][] BuildBuckets<T>(T[] cells, Func<T, (Vector2 Min, Vector2 Max)?> bounds)
+    private static int[][] BuildBuckets(CellSurface[] cells, Func<CellSurface, (Vector2 Min, Vector2 Max)?> bounds)
     {
         const int n = PhysicsConstants.CellsPerSide;
         var lists = new List<int>?[n * n];
