@@ -145,16 +145,13 @@ public sealed class PhysicsEngine
         float ceiling = worldPosition.Z + stepUpHeight;
         int hit;
         ReadOnlySpan<ObjectSurface> objects;
-        Vector2 p;
-        if (CellIds.IsIndoor(cellId))
+        if (LocateQuery(worldPosition, cellId, out Vector2 p, out int index) is not LandblockEntry entry)
         {
-            int x = CellIds.LandblockX(cellId), y = CellIds.LandblockY(cellId);
-            if (_registry.Get(x, y) is not LandblockEntry entry || !entry.TryGetCellIndex(cellId, out int index))
-            {
-                return false;
-            }
+            return false;
+        }
 
-            p = _frame.Representable(x, y, new Vector2(worldPosition.X, worldPosition.Y) - _frame.Origin(x, y));
+        if (index >= 0)
+        {
             CellSurface cell = entry.Cells[index];
             bool found = cell.TrySampleFloor(p.X, p.Y, worldPosition.Z, out groundZ, out normal);
             objects = cell.Objects;
@@ -165,16 +162,10 @@ public sealed class PhysicsEngine
         }
         else
         {
-            _frame.Locate(worldPosition, cellId, out int lbX, out int lbY, out p);
-            if (_registry.Get(lbX, lbY) is not LandblockEntry land)
-            {
-                return false;
-            }
-
-            groundZ = land.Terrain.SampleZUnchecked(p.X, p.Y);
-            normal = land.Terrain.NormalUnchecked(p.X, p.Y);
-            objects = land.OutdoorObjects;
-            if (objects.Length == 0 || !ObjectGeometry.RaiseOutdoors(land, p.X, p.Y, ceiling, true, ref groundZ, out hit))
+            groundZ = entry.Terrain.SampleZUnchecked(p.X, p.Y);
+            normal = entry.Terrain.NormalUnchecked(p.X, p.Y);
+            objects = entry.OutdoorObjects;
+            if (objects.Length == 0 || !ObjectGeometry.RaiseOutdoors(entry, p.X, p.Y, ceiling, true, ref groundZ, out hit))
             {
                 return true;
             }
@@ -208,24 +199,12 @@ public sealed class PhysicsEngine
             throw new ArgumentException($"reach {reach} must be finite and ≥ 0.", nameof(reach));
         }
 
-        ObjectSurface[] objects;
-        Vector2 p;
-        if (CellIds.IsIndoor(cellId))
+        if (LocateQuery(worldPosition, cellId, out Vector2 p, out int index) is not LandblockEntry entry)
         {
-            int x = CellIds.LandblockX(cellId), y = CellIds.LandblockY(cellId);
-            if (_registry.Get(x, y) is not LandblockEntry entry || !entry.TryGetCellIndex(cellId, out int index))
-            {
-                return 0;
-            }
+            return 0;
+        }
 
-            p = _frame.Representable(x, y, new Vector2(worldPosition.X, worldPosition.Y) - _frame.Origin(x, y));
-            objects = entry.Cells[index].Objects;
-        }
-        else
-        {
-            _frame.Locate(worldPosition, cellId, out int lbX, out int lbY, out p);
-            objects = _registry.Get(lbX, lbY)?.OutdoorObjects ?? [];
-        }
+        ObjectSurface[] objects = index >= 0 ? entry.Cells[index].Objects : entry.OutdoorObjects;
 
         uint best = 0;
         float bestDistance = reach;
@@ -247,6 +226,32 @@ public sealed class PhysicsEngine
         }
 
         return best;
+    }
+
+    /// <summary>
+    /// Where a host query's position is: its landblock's entry (null when not loaded, or the indoor cell
+    /// is unknown), the landblock-local point as <c>Resolve</c> forms it, and the indoor cell's index
+    /// (−1 outdoors).
+    /// </summary>
+    private LandblockEntry? LocateQuery(Vector3 worldPosition, uint cellId, out Vector2 local, out int cellIndex)
+    {
+        cellIndex = -1;
+        if (CellIds.IsIndoor(cellId))
+        {
+            int x = CellIds.LandblockX(cellId), y = CellIds.LandblockY(cellId);
+            local = default;
+            if (_registry.Get(x, y) is not LandblockEntry entry || !entry.TryGetCellIndex(cellId, out cellIndex))
+            {
+                cellIndex = -1;
+                return null;
+            }
+
+            local = _frame.Representable(x, y, new Vector2(worldPosition.X, worldPosition.Y) - _frame.Origin(x, y));
+            return entry;
+        }
+
+        _frame.Locate(worldPosition, cellId, out int lbX, out int lbY, out local);
+        return _registry.Get(lbX, lbY);
     }
 
     /// <summary>
