@@ -164,4 +164,21 @@ public class ObjectBadDataTests
         cottage.Portals.Add(new BuildingPortal { OtherCellId = 0x0005 });
         Throws(() => ObjectSurface.Building(TestData.Holtburg, cottage, RealObjects.GfxObjs, RealObjects.NoSetups), "0x01000A2B", "portal 4", "0x0005");
     }
+
+    [Fact]
+    public void More_outdoor_objects_than_the_limit_changes_nothing()
+    {
+        var engine = new PhysicsEngine(TestData.Holtburg);
+        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(90f), []);
+        var box = new ObjectSurface(Box(), Here, 0);
+        var many = Enumerable.Repeat(box, PhysicsConstants.MaxOutdoorObjects + 1).ToList();
+        Throws(
+            () => engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), [], many),
+            "0xA9B4FFFF", $"{PhysicsConstants.MaxOutdoorObjects + 1} objects outdoors", $"at most {PhysicsConstants.MaxOutdoorObjects}");
+        engine.TryGetGround(new Vector3(100f, 100f, 95f), 0xA9B40000, out float z, out _).Should().BeTrue();
+        z.Should().Be(90f, "the landblock registered before is still there, unchanged");
+
+        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), [], many.Take(PhysicsConstants.MaxOutdoorObjects).ToList());
+        engine.ContainsLandblock(TestData.Holtburg).Should().BeTrue("exactly the limit is accepted");
+    }
 }
