@@ -164,7 +164,7 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
             }
         }
 
-        return entry.OutdoorObjects.Length > 0 && AnyObjectWallNear(entry, min, max);
+        return entry.ObjectsMayBeWithin(centre, reach) && AnyObjectWallNear(entry, min, max);
     }
 
     /// <summary>Whether an outdoor object listed over the fine-grid squares of the box has walls overlapping it.</summary>
@@ -178,7 +178,8 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
             {
                 foreach (int o in entry.ObjectsAt(cx, cy))
                 {
-                    if (Overlap(entry.OutdoorObjects[o].Walls, min, max))
+                    ref readonly ObjectBox b = ref entry.ObjectBoxes[o];
+                    if (b.WallMin.X <= max.X && b.WallMax.X >= min.X && b.WallMin.Y <= max.Y && b.WallMax.Y >= min.Y)
                     {
                         return true;
                     }

@@ -56,6 +56,8 @@ internal sealed class LandblockEntry
         EntryBuckets = BuildBuckets(cells, static c => c.HasFloor ? (c.FloorMin, c.FloorMax) : null);
         WallBuckets = BuildBuckets(cells, static c => c.Walls.Polygons.Length > 0 ? (c.Walls.Min, c.Walls.Max) : null);
         (ObjectGridStarts, ObjectGridItems) = BuildObjectGrid(outdoorObjects);
+        ObjectBoxes = Array.ConvertAll(outdoorObjects, static o => new ObjectBox(o));
+        ObjectCells = ObjectCellMask(ObjectGridStarts);
     }
 
     /// <summary>Squares per side of the outdoor objects' fine grid (<see cref="ObjectGridSize"/> metres each).</summary>
@@ -95,6 +97,9 @@ internal sealed class LandblockEntry
     /// </summary>
     public ObjectSurface[] OutdoorObjects { get; }
 
+    /// <summary>The boxes of <see cref="OutdoorObjects"/>, by the same index, in one array: a move's tests read them, not the objects.</summary>
+    public ObjectBox[] ObjectBoxes { get; }
+
     /// <summary>How many of <see cref="OutdoorObjects"/> are the landblock's own.</summary>
     public int OwnObjectCount { get; }
 
@@ -113,6 +118,24 @@ internal sealed class LandblockEntry
 
     /// <inheritdoc cref="ObjectGridStarts"/>
     public int[] ObjectGridItems { get; }
+
+    /// <summary>
+    /// Per outdoor cell (bit <see cref="CellIds.OutdoorCellNumber"/> − 1): set when a square of the fine
+    /// grid on the cell or within one square of it lists an outdoor object. A box that reaches less than
+    /// <see cref="ObjectCellReach"/> beyond a cell whose bit is clear meets no outdoor object: it stays on
+    /// those squares. What lets a move far from every object skip them with one bit read.
+    /// </summary>
+    public ulong ObjectCells { get; }
+
+    /// <summary>How far beyond an outdoor cell <see cref="ObjectCells"/> answers for, metres: one square, less twice <see cref="ObjectGeometry.NearMargin"/>.</summary>
+    public const float ObjectCellReach = ObjectGridSize - (2f * ObjectGeometry.NearMargin);
+
+    /// <summary>
+    /// Whether an outdoor object may be listed on a square of the fine grid within <paramref name="reach"/>
+    /// (metres, per axis) of <paramref name="local"/> (landblock-local): false is certain.
+    /// </summary>
+    public bool ObjectsMayBeWithin(Vector2 local, float reach) =>
+        reach < ObjectCellReach ? (ObjectCells & (1UL << (int)(CellIds.OutdoorCellNumberUnchecked(local.X, local.Y) - 1))) != 0 : OutdoorObjects.Length > 0;
 
     /// <summary>The fine grid's column (or row) of a landblock-local coordinate, clamped to the landblock.</summary>
     [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
@@ -183,6 +206,35 @@ internal sealed class LandblockEntry
         return (starts, items);
     }
 
+    /// <summary><see cref="ObjectCells"/> of a fine grid (<see cref="ObjectGridStarts"/>; empty: no objects).</summary>
+    private static ulong ObjectCellMask(int[] starts)
+    {
+        if (starts.Length == 0)
+        {
+            return 0;
+        }
+
+        const int perCell = ObjectGridSide / PhysicsConstants.CellsPerSide;
+        ulong mask = 0;
+        for (int cx = 0; cx < PhysicsConstants.CellsPerSide; cx++)
+        {
+            for (int cy = 0; cy < PhysicsConstants.CellsPerSide; cy++)
+            {
+                int x0 = Math.Max((cx * perCell) - 1, 0), x1 = Math.Min(((cx + 1) * perCell) + 1, ObjectGridSide);
+                int y0 = Math.Max((cy * perCell) - 1, 0), y1 = Math.Min(((cy + 1) * perCell) + 1, ObjectGridSide);
+                for (int x = x0; x < x1; x++)
+                {
+                    if (starts[(x * ObjectGridSide) + y0] != starts[(x * ObjectGridSide) + y1])
+                    {
+                        mask |= 1UL << ((cx * PhysicsConstants.CellsPerSide) + cy);
+                    }
+                }
+            }
+        }
+
+        return mask;
+    }
+
     /// <summary>Per outdoor cell, the items whose bounds (from <paramref name="bounds"/>; null: none) overlap it.</summary>
     private static int[][] BuildBuckets(CellSurface[] cells, Func<CellSurface, (Vector2 Min, Vector2 Max)?> bounds)
     {
@@ -214,4 +266,19 @@ internal sealed class LandblockEntry
 
         return buckets;
     }
+}
+
+/// <summary>
+/// An outdoor object's walls' bounds seen from above (empty when it has none), the height range of all
+/// of it, and its floors' bounds, landblock-local metres: what a move tests before it reads the object
+/// (<see cref="LandblockEntry.ObjectBoxes"/>).
+/// </summary>
+internal readonly struct ObjectBox(ObjectSurface o)
+{
+    public readonly Vector2 WallMin = o.Walls.Min;
+    public readonly Vector2 WallMax = o.Walls.Max;
+    public readonly float ZMin = o.BoundsMin.Z;
+    public readonly float ZMax = o.BoundsMax.Z;
+    public readonly Vector2 FloorMin = o.FloorMin;
+    public readonly Vector2 FloorMax = o.FloorMax;
 }

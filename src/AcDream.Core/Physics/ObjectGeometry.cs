@@ -81,7 +81,7 @@ internal static class ObjectGeometry
     }
 
     /// <summary>Margin of <see cref="AnyOutdoors"/>, metres.</summary>
-    private const float NearMargin = 0.01f;
+    public const float NearMargin = 0.01f;
 
     /// <summary>
     /// The first wall of <paramref name="objects"/> that the move <paramref name="p0"/> → <paramref name="p1"/>
@@ -103,11 +103,19 @@ internal static class ObjectGeometry
     }
 
     /// <summary>
+    /// The outdoor objects of <paramref name="entry"/> a move meets, in one pass over those listed on the
+    /// squares of its fine grid the move's box covers (<see cref="LandblockEntry.ObjectsAt"/>; an object over
+    /// several of them is tested again, with the same answer): the first wall the move
+    /// <paramref name="p0"/> → <paramref name="p1"/> crosses at height <paramref name="h"/>, as
     /// <see cref="FirstCrossing(ReadOnlySpan{ObjectSurface}, Vector2, Vector2, float, ref float, ref Vector3, ref int)"/>
-    /// over the outdoor objects a landblock lists over the squares of its fine grid the move's box covers
-    /// (an object over several of them is tested again, with the same answer).
+    /// (<paramref name="wall"/>: the object); and, when <paramref name="floors"/>, <paramref name="groundZ"/>
+    /// raised to the highest object floor under <paramref name="p1"/> no higher than <paramref name="h"/>
+    /// (<paramref name="floor"/>: the object; the end point's square is among those of the box). The
+    /// objects' boxes (<see cref="LandblockEntry.ObjectBoxes"/>) reject them first, so only an object in
+    /// reach is read.
     /// </summary>
-    public static void FirstCrossingOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1, float h, ref float t, ref Vector3 normal, ref int objectIndex)
+    public static void AmongOutdoors(
+        LandblockEntry entry, Vector2 p0, Vector2 p1, float h, ref float t, ref Vector3 normal, ref int wall, bool floors, ref float groundZ, ref int floor)
     {
         if (entry.OutdoorObjects.Length == 0)
         {
@@ -118,15 +126,24 @@ internal static class ObjectGeometry
         int x0 = LandblockEntry.ObjectGridColumn(lo.X), x1 = LandblockEntry.ObjectGridColumn(hi.X);
         int y0 = LandblockEntry.ObjectGridColumn(lo.Y), y1 = LandblockEntry.ObjectGridColumn(hi.Y);
         ObjectSurface[] objects = entry.OutdoorObjects;
+        ObjectBox[] boxes = entry.ObjectBoxes;
         for (int cx = x0; cx <= x1; cx++)
         {
             for (int cy = y0; cy <= y1; cy++)
             {
                 foreach (int i in entry.ObjectsAt(cx, cy))
                 {
-                    if (Crosses(objects[i], p0, p1, lo, hi, h, ref t, ref normal))
+                    ref readonly ObjectBox b = ref boxes[i];
+                    if (b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y && b.ZMin < h && b.ZMax > h
+                        && FirstCrossing(objects[i].Walls, p0, p1, lo, hi, h, ref t, ref normal))
                     {
-                        objectIndex = i;
+                        wall = i;
+                    }
+
+                    if (floors && p1.X >= b.FloorMin.X && p1.Y >= b.FloorMin.Y && p1.X <= b.FloorMax.X && p1.Y <= b.FloorMax.Y
+                        && objects[i].TryFloorBelow(p1.X, p1.Y, h, out float z) && z > groundZ)
+                    {
+                        (groundZ, floor) = (z, i);
                     }
                 }
             }

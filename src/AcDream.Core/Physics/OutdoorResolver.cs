@@ -44,7 +44,9 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         // Objects are looked at only when one is listed over the fine-grid squares of the move's box
         // (or the move crosses into a landblock with objects): a move away from every object takes
         // the path of a landblock without objects, with the same answer.
-        bool objectsNear = here.OutdoorObjects.Length > 0 && ObjectGeometry.AnyOutdoors(here, local, local + delta);
+        bool objectsNear = (here.ObjectCells & (1UL << (int)((hereCellId & 0xFFFF) - 1))) != 0
+            || (!(MathF.Abs(delta.X) < LandblockEntry.ObjectCellReach && MathF.Abs(delta.Y) < LandblockEntry.ObjectCellReach)
+                && here.OutdoorObjects.Length > 0 && ObjectGeometry.AnyOutdoors(here, local, local + delta));
         q.Stand = new Standing(lbX, lbY, local, groundHere, hereCellId);
         q.Here = here;
         if (there is null)
@@ -62,12 +64,10 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
             // Among objects: refused at the first object wall the move crosses at the feet plus the step
             // (a shell's is the building's outer wall); else it ends on the highest floor under the end
             // point no more than the step above the feet, the terrain or an object's, and goes on below.
-            if (CrossesObjectWall(ref q, out ResolveOutcome why, out Vector3 wallNormal))
+            if (AmongObjects(ref q, position.Z + q.StepUp, ref groundZ, out onObject, out ResolveOutcome why, out Vector3 wallNormal))
             {
                 return Refuse(ref q, why, wallNormal);
             }
-
-            onObject = ObjectFloor(there, candidate, position.Z + q.StepUp, ref groundZ);
         }
 
         return TryEnterCell(there, candidate, groundZ, q.StepUp, out int cellIndex, out float floorZ)
@@ -75,28 +75,30 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
             : WalkTerrain(ref q, groundZ, onObject);
     }
 
-    /// <summary>Whether the move crosses an object's wall (of the landblock it ends in, or of its own across a seam) at the feet plus the step; the outcome and the wall's normal.</summary>
+    /// <summary>
+    /// The objects' answer for a move among them: whether it crosses an object's wall (of the landblock
+    /// it ends in, or of its own across a seam) at the feet plus the step, <paramref name="h"/> (the
+    /// outcome: a shell's is the building's outer wall; and the wall's normal); else
+    /// <paramref name="groundZ"/> raised to the highest object floor under the end point no higher
+    /// than <paramref name="h"/>, and whether it was.
+    /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a move away from objects pays nothing for it
-    private static bool CrossesObjectWall(ref MoveQuery q, out ResolveOutcome why, out Vector3 normal)
+    private static bool AmongObjects(ref MoveQuery q, float h, ref float groundZ, out bool onObject, out ResolveOutcome why, out Vector3 normal)
     {
-        float h = q.Z + q.StepUp, t = 2f;
+        float t = 2f;
         normal = default;
-        int there = -1, here = -1;
-        ObjectGeometry.FirstCrossingOutdoors(q.Entry, q.P0, q.P1, h, ref t, ref normal, ref there);
+        int there = -1, here = -1, floor = -1;
+        ObjectGeometry.AmongOutdoors(q.Entry, q.P0, q.P1, h, ref t, ref normal, ref there, true, ref groundZ, ref floor);
         if (q.Here != q.Entry)
         {
-            ObjectGeometry.FirstCrossingOutdoors(q.Here!, q.Stand.Local, q.Stand.Local + q.Delta, h, ref t, ref normal, ref here);
+            ObjectGeometry.AmongOutdoors(q.Here!, q.Stand.Local, q.Stand.Local + q.Delta, h, ref t, ref normal, ref here, false, ref groundZ, ref floor);
         }
 
         ObjectSurface? wall = here >= 0 ? q.Here!.OutdoorObjects[here] : there >= 0 ? q.Entry.OutdoorObjects[there] : null;
         why = wall is { IsBuilding: true } ? ResolveOutcome.OuterWall : ResolveOutcome.Wall;
+        onObject = floor >= 0;
         return wall is not null;
     }
-
-    /// <summary>Raises <paramref name="groundZ"/> to an object's floor at <paramref name="p"/> no higher than <paramref name="ceilingZ"/>; whether it did.</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve, whose inlining budget its loop would use up
-    private static bool ObjectFloor(LandblockEntry entry, Vector2 p, float ceilingZ, ref float groundZ) =>
-        ObjectGeometry.RaiseOutdoors(entry, p.X, p.Y, ceilingZ, true, ref groundZ, out _);
 
     /// <summary>The move ends over cell <paramref name="cellIndex"/>'s floor at the ground there: entered, unless its edge is a step too high or (doors only) no door leads in.</summary>
     private ResolveResult EnterCell(ref MoveQuery q, int cellIndex, float floorZ)
