@@ -3,6 +3,7 @@ using System.Reflection;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
 using AcDream.Core.Tests.Objects;
+using AcDream.Testing;
 using Xunit.Abstractions;
 using static AcDream.Core.Tests.TestData;
 
@@ -70,8 +71,7 @@ public class BodyOpenGroundTests(ITestOutputHelper output)
                     // on from where the last sub-step was rounded to: the same move, within half a float step
                     // of the position per sub-step.
                     (answer.Outcome, answer.CellId, answer.IsOnGround).Should().Be((plan.Outcome, plan.CellId, plan.IsOnGround), what);
-                    float largest = MathF.Max(MathF.Abs(at.Position.X), MathF.Abs(at.Position.Y)) + length;
-                    Vector3.Distance(answer.Position, plan.Position).Should().BeLessThanOrEqualTo(MathF.Ceiling(length / sweep) * (MathF.BitIncrement(largest) - largest), what);
+                    ((double)Vector3.Distance(answer.Position, plan.Position)).Should().BeLessThanOrEqualTo(Math.Ceiling(length / sweep) * BodyCheck.Spacing(at.Position, delta), what);
                 }
                 else
                 {

@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
+using AcDream.Testing;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Objects;
@@ -95,9 +96,8 @@ public class ObjectCellSkipTests(ITestOutputHelper output)
                     // rounded to the world frame from the last: the same move, within half a float step of
                     // the position per sub-step.
                     (r.Outcome, r.CellId, r.IsOnGround).Should().Be((bare.Outcome, bare.CellId, bare.IsOnGround), what);
-                    int steps = (int)MathF.Ceiling(length / options.SweepStepLength!.Value);
-                    float ulp = MathF.BitIncrement(MathF.Max(MathF.Abs(position.X), MathF.Abs(position.Y)) + length) - (MathF.Max(MathF.Abs(position.X), MathF.Abs(position.Y)) + length);
-                    Vector3.Distance(r.Position, bare.Position).Should().BeLessThanOrEqualTo(steps * ulp, what);
+                    double steps = Math.Ceiling(length / options.SweepStepLength!.Value);
+                    ((double)Vector3.Distance(r.Position, bare.Position)).Should().BeLessThanOrEqualTo(steps * BodyCheck.Spacing(position, delta), what);
                 }
             }
 
