@@ -38,8 +38,9 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
     /// <summary>
     /// Whether an outdoor move of <paramref name="delta"/> (not zero) needs no plan: its landblock is not
     /// loaded (the point move holds or refuses it), or no wall lies in the box the body sweeps (the move's
-    /// start and end grown by the radius, skin and contact tolerance) and the box stays inside the
-    /// landblock. Then the body meets no wall, and the point move is its answer. Indoor moves are always planned.
+    /// start and end grown by the radius, skin and contact tolerance) and the box a plan gathers walls in
+    /// (the start ± the move's length and that growth) stays inside the landblock. Then the body meets no
+    /// wall, and the point move is its answer. Indoor moves are always planned.
     /// </summary>
     public bool IsOpenGround(Vector3 position, uint cellId, Vector2 delta, MoverBody body)
     {
@@ -58,10 +59,14 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
         // tolerance): with no wall in it the body meets none on its way, so it does not slide, and its
         // move is the point's. (Were it to meet one, its slide could turn anywhere within the move's
         // length, which is why a plan gathers the walls around the start as far as the move reaches.)
+        // The seams are tested on the plan's box, not the swept one: across a seam the plan gathers a
+        // neighbour's cells, whose walls may reach back over the seam into the swept box, and this
+        // landblock does not list them.
         float length = delta.Length();
         float grow = body.Radius + Skin(lbX, lbY, local, length + body.Radius) + PhysicsConstants.ContactTolerance;
+        float reach = length + grow;
         Vector2 min = Vector2.Min(local, local + delta) - new Vector2(grow), max = Vector2.Max(local, local + delta) + new Vector2(grow);
-        return !NearSeam(min, max) && !AnyWallNear(entry, min, max, local, length + grow);
+        return !NearSeam(local - new Vector2(reach), local + new Vector2(reach)) && !AnyWallNear(entry, min, max, local, reach);
     }
 
     /// <summary>
