@@ -41,9 +41,11 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         LandblockEntry? there = toX == lbX && toY == lbY ? here : registry.Get(toX, toY); // one read of each slot per call
         float groundHere = here.Terrain.SampleZUnchecked(local.X, local.Y); // the terrain; objects on the rare paths (GroundHere)
 
-        // Objects are looked at only when one is listed over the fine-grid squares of the move's box
-        // (or the move crosses into a landblock with objects): a move away from every object takes
-        // the path of a landblock without objects, with the same answer.
+        // Objects are looked at only when the bit of the mover's cell is set (an object is listed on a
+        // fine-grid square of the cell or within one square of it), or a move reaching ObjectCellReach
+        // or more along an axis has one listed over the squares of its box, or the move crosses into
+        // another landblock with objects: a move away from every object takes the path of a landblock
+        // without objects, with the same answer.
         bool objectsNear = (here.ObjectCells & (1UL << (int)((hereCellId & 0xFFFF) - 1))) != 0
             || (!(MathF.Abs(delta.X) < LandblockEntry.ObjectCellReach && MathF.Abs(delta.Y) < LandblockEntry.ObjectCellReach)
                 && here.OutdoorObjects.Length > 0 && ObjectGeometry.AnyOutdoors(here, local, local + delta));
