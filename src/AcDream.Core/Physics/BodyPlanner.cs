@@ -273,8 +273,8 @@ internal sealed class BodyPlanner(LandblockRegistry registry, WorldFrame frame)
             {
                 foreach (int o in entry.ObjectsAt(cx, cy))
                 {
-                    CellWalls objectWalls = entry.OutdoorObjects[o].Walls;
-                    if (walls.Overlaps(objectWalls.Min, objectWalls.Max, offset) && !walls.TryAdd(slot, WallSet.ObjectFlag | o))
+                    ref readonly ObjectBox b = ref entry.ObjectBoxes[o];
+                    if (walls.Overlaps(b.WallMin, b.WallMax, offset) && !walls.TryAdd(slot, WallSet.ObjectFlag | o))
                     {
                         return false;
                     }
