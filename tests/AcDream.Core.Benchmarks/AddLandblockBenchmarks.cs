@@ -33,17 +33,23 @@ public class AddLandblockBenchmarks
     }
 
     [Benchmark(Baseline = true)]
-    public int BuildSurfacesAndAdd()
+    public int BuildSurfacesAndAdd() => BuildAndAdd(_engine, _fixtures, _heights, _table);
+
+    /// <summary>
+    /// The cells' surfaces and the terrain built from the dat model and added as landblock
+    /// <see cref="World.Holtburg"/>: this class's baseline, and <see cref="ObjectAddLandblockBenchmarks"/>'.
+    /// </summary>
+    internal static int BuildAndAdd(PhysicsEngine engine, List<CellFixtureReader.FixtureCell> fixtures, byte[] heights, float[] table)
     {
-        var cells = new CellSurface[_fixtures.Count];
+        var cells = new CellSurface[fixtures.Count];
         for (int i = 0; i < cells.Length; i++)
         {
-            CellFixtureReader.FixtureCell f = _fixtures[i];
+            CellFixtureReader.FixtureCell f = fixtures[i];
             cells[i] = new CellSurface(f.CellId, f.EnvCell, f.CellStruct);
         }
 
-        _engine.AddLandblock(World.Holtburg, new TerrainSurface(_heights, _table, World.Holtburg), cells);
-        return _engine.LandblockCount;
+        engine.AddLandblock(World.Holtburg, new TerrainSurface(heights, table, World.Holtburg), cells);
+        return engine.LandblockCount;
     }
 
     [Benchmark]

@@ -13,7 +13,7 @@ namespace AcDream.Core.Benchmarks;
 /// building shells, three staircases of the real stair piece, trees as Setups with a cylinder and a
 /// box part; <see cref="ObjectWorld.Info"/>), building their <see cref="ObjectSurface"/>s from the dat
 /// model, against the baseline: the 16 real cottage cells' surfaces built and added
-/// (<see cref="AddLandblockBenchmarks.BuildSurfacesAndAdd"/>, the same code). Target: ≤ 40×.
+/// (<see cref="AddLandblockBenchmarks.BuildAndAdd"/>, the same code). Target: ≤ 40×.
 /// </summary>
 [MemoryDiagnoser]
 public class ObjectAddLandblockBenchmarks
@@ -45,20 +45,9 @@ public class ObjectAddLandblockBenchmarks
         Console.WriteLine($"// {_objects.Count} objects ({_info.Buildings.Count} buildings, {_info.Objects.Count} stabs): {polygons} wall polygons, cylinders and floor triangles");
     }
 
-    /// <summary>The 16 real cottage cells: their surfaces built from the dat model and added (as <see cref="AddLandblockBenchmarks.BuildSurfacesAndAdd"/>).</summary>
+    /// <summary>The 16 real cottage cells: their surfaces built from the dat model and added (<see cref="AddLandblockBenchmarks.BuildAndAdd"/>).</summary>
     [Benchmark(Baseline = true)]
-    public int CellsBuildAndAdd()
-    {
-        var cells = new CellSurface[_fixtures.Count];
-        for (int i = 0; i < cells.Length; i++)
-        {
-            CellFixtureReader.FixtureCell f = _fixtures[i];
-            cells[i] = new CellSurface(f.CellId, f.EnvCell, f.CellStruct);
-        }
-
-        _engine.AddLandblock(World.Holtburg, new TerrainSurface(_heights, _table, World.Holtburg), cells);
-        return _engine.LandblockCount;
-    }
+    public int CellsBuildAndAdd() => AddLandblockBenchmarks.BuildAndAdd(_engine, _fixtures, _heights, _table);
 
     /// <summary>The 200 objects: their surfaces built from the landblock's object list (<see cref="ObjectSurface.FromLandblock"/>) and added with the terrain.</summary>
     [Benchmark]
