@@ -1,5 +1,4 @@
 using System.Globalization;
-using System.Numerics;
 using System.Text.Json;
 using AcDream.Core.Dat;
 
@@ -28,7 +27,7 @@ public static class ObjectFixtureReader
                 Flags = GfxObjFlags.HasPhysics,
             };
             JsonElement sphere = root.GetProperty("boundingSphere");
-            gfxObj.BoundingSphere = new Sphere { Origin = ReadVector(sphere.GetProperty("origin")), Radius = sphere.GetProperty("radius").GetSingle() };
+            gfxObj.BoundingSphere = new Sphere { Origin = CellFixtureReader.ReadVector(sphere.GetProperty("origin")), Radius = sphere.GetProperty("radius").GetSingle() };
             CellFixtureReader.ReadPolygons(root.GetProperty("physicsPolygons"), gfxObj.PhysicsPolygons, gfxObj.VertexArray, []);
 
             return gfxObj;
@@ -38,6 +37,4 @@ public static class ObjectFixtureReader
             throw new InvalidDataException($"{source}: not a fixture object ({e.Message})", e);
         }
     }
-
-    private static Vector3 ReadVector(JsonElement array) => CellFixtureReader.ReadVector(array);
 }

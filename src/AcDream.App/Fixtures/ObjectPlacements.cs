@@ -19,9 +19,6 @@ public static class ObjectPlacements
     /// <summary>One slanted stair piece; eight make the staircase of 0xF682.</summary>
     public const uint StairPiece = 0x01000AC5;
 
-    /// <summary>The Holtburg landblock.</summary>
-    public const uint Holtburg = 0xA9B4FFFF;
-
     /// <summary>The landblock of the outdoor staircase.</summary>
     public const uint StaircaseLandblock = 0xF682FFFF;
 

@@ -173,7 +173,7 @@ internal sealed class HoltburgWorld : ILandblockSource
         _ => null,
     };
 
-    /// <summary>The region's height table: 256 heights in metres, finer steps near 94 m, coarser away from it.</summary>
+    /// <summary>The region's height table: 256 heights in metres, finer steps near the flat height (94 m, or <see cref="StaircaseFlatZ"/> in the staircase world), coarser away from it.</summary>
     public float[] HeightTable { get; }
 
     /// <summary>The real cells of 0xA9B4, ascending id.</summary>
@@ -181,9 +181,6 @@ internal sealed class HoltburgWorld : ILandblockSource
 
     /// <summary>The engine's surfaces of <see cref="Cells"/>, in the same order: what the engine is given for 0xA9B4 (built once).</summary>
     public IReadOnlyList<CellSurface> CellSurfaces { get; }
-
-    /// <summary>Table entry i = 94 + 0.5·d + 0.02·d·|d| metres with d = i − 64: monotonic, 94 m at 64.</summary>
-    public static float[] BuildHeightTable() => BuildHeightTable(FlatZ);
 
     /// <summary>Table entry i = <paramref name="flatZ"/> + 0.5·d + 0.02·d·|d| metres with d = i − 64: monotonic, <paramref name="flatZ"/> at 64.</summary>
     private static float[] BuildHeightTable(float flatZ)
