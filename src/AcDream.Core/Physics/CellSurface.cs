@@ -75,19 +75,13 @@ public sealed class CellSurface
             throw new ArgumentException($"{cell}: Position.Origin {origin} is not finite.", nameof(envCell));
         }
 
-        // Normalised in double: a float LengthSquared overflows for a quaternion longer than ~1.8e19
-        // (and Quaternion.Normalize then returns zero, which rotates nothing).
-        double length = Math.Sqrt(((double)orientation.X * orientation.X) + ((double)orientation.Y * orientation.Y)
-            + ((double)orientation.Z * orientation.Z) + ((double)orientation.W * orientation.W));
-        if (!float.IsFinite(orientation.X) || !float.IsFinite(orientation.Y) || !float.IsFinite(orientation.Z) || !float.IsFinite(orientation.W)
-            || !(length >= PhysicsConstants.MinOrientationLength))
+        if (!TryUnitOrientation(orientation, out Quaternion unit))
         {
             throw new ArgumentException($"{cell}: Position.Orientation {orientation} is not a rotation (non-finite, or shorter than 1e-6).", nameof(envCell));
         }
 
         CellId = cellId;
         Origin = origin;
-        var unit = new Quaternion((float)(orientation.X / length), (float)(orientation.Y / length), (float)(orientation.Z / length), (float)(orientation.W / length));
         var transform = new CellTransform(cell, cellStruct, origin, unit);
 
         List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> physics = PlacePhysicsPolygons(cell, cellStruct, transform);
@@ -354,6 +348,26 @@ public sealed class CellSurface
         }
 
         return (infos, shapes);
+    }
+
+    /// <summary>
+    /// <paramref name="q"/> normalised to a unit rotation; false when it is not finite or
+    /// shorter than <see cref="PhysicsConstants.MinOrientationLength"/>. Normalised in double: a float
+    /// LengthSquared overflows for a quaternion longer than ~1.8e19 (and Quaternion.Normalize then
+    /// returns zero, which rotates nothing).
+    /// </summary>
+    internal static bool TryUnitOrientation(Quaternion q, out Quaternion unit)
+    {
+        double length = Math.Sqrt(((double)q.X * q.X) + ((double)q.Y * q.Y) + ((double)q.Z * q.Z) + ((double)q.W * q.W));
+        if (!float.IsFinite(q.X) || !float.IsFinite(q.Y) || !float.IsFinite(q.Z) || !float.IsFinite(q.W)
+            || !(length >= PhysicsConstants.MinOrientationLength))
+        {
+            unit = default;
+            return false;
+        }
+
+        unit = new Quaternion((float)(q.X / length), (float)(q.Y / length), (float)(q.Z / length), (float)(q.W / length));
+        return true;
     }
 
     private static void ThrowIfNotFinite(float x, float y, float z)

@@ -350,15 +350,12 @@ public sealed class ObjectSurface
                 throw new ArgumentNullException(argument, $"{name}: the frame is null.");
             }
 
-            Quaternion q = frame.Orientation;
-            double length = Math.Sqrt(((double)q.X * q.X) + ((double)q.Y * q.Y) + ((double)q.Z * q.Z) + ((double)q.W * q.W));
-            if (!IsFinite(frame.Origin) || !float.IsFinite(q.X) || !float.IsFinite(q.Y) || !float.IsFinite(q.Z) || !float.IsFinite(q.W)
-                || !(length >= PhysicsConstants.MinOrientationLength))
+            if (!IsFinite(frame.Origin) || !CellSurface.TryUnitOrientation(frame.Orientation, out Quaternion unit))
             {
-                throw new ArgumentException($"{name}: frame ({frame.Origin}, {q}) is not a placement (non-finite, or an orientation shorter than 1e-6).", argument);
+                throw new ArgumentException($"{name}: frame ({frame.Origin}, {frame.Orientation}) is not a placement (non-finite, or an orientation shorter than 1e-6).", argument);
             }
 
-            return new Rigid(new Quaternion((float)(q.X / length), (float)(q.Y / length), (float)(q.Z / length), (float)(q.W / length)), frame.Origin);
+            return new Rigid(unit, frame.Origin);
         }
 
         public Vector3 Apply(Vector3 v) => Origin + Vector3.Transform(v, Rotation);
