@@ -89,25 +89,8 @@ public sealed class CellSurface
         (Portals, _portalShapes) = BuildPortals(cell, cellId, envCell, cellStruct, transform);
         Walls = CellWalls.Build(cell, physics, _portalShapes, [], nameof(cellStruct));
 
-        if (_floors.Length > 0)
-        {
-            Vector2 min = _floors[0].Min, max = _floors[0].Max;
-            foreach (FloorTriangle t in _floors)
-            {
-                min = Vector2.Min(min, t.Min);
-                max = Vector2.Max(max, t.Max);
-            }
-
-            FloorMin = min;
-            FloorMax = max;
-            _grid = _floors.Length > PhysicsConstants.FloorGridMinTriangles ? new FloorGrid(_floors, min, max) : null;
-        }
-        else
-        {
-            // An empty box that contains nothing.
-            FloorMin = new Vector2(float.MaxValue);
-            FloorMax = new Vector2(float.MinValue);
-        }
+        (FloorMin, FloorMax) = FloorBounds(_floors);
+        _grid = _floors.Length > PhysicsConstants.FloorGridMinTriangles ? new FloorGrid(_floors, FloorMin, FloorMax) : null;
     }
 
     /// <summary>The engine's copy of <paramref name="cell"/> with the objects standing in it (its <c>StaticObjects</c>), and whether its building has a registered shell.</summary>
@@ -295,6 +278,19 @@ public sealed class CellSurface
         }
 
         return placed;
+    }
+
+    /// <summary>XY bounds of <paramref name="floors"/> (each triangle's, grown by the edge tolerance), landblock-local metres; with no floors, an empty box that contains nothing.</summary>
+    internal static (Vector2 Min, Vector2 Max) FloorBounds(FloorTriangle[] floors)
+    {
+        Vector2 min = new(float.MaxValue), max = new(float.MinValue);
+        foreach (FloorTriangle t in floors)
+        {
+            min = Vector2.Min(min, t.Min);
+            max = Vector2.Max(max, t.Max);
+        }
+
+        return (min, max);
     }
 
     /// <summary>The walkable polygons (winding normal Z ≥ <see cref="PhysicsConstants.FloorZ"/>), fan-triangulated.</summary>

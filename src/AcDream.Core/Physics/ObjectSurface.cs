@@ -43,13 +43,7 @@ public sealed class ObjectSurface
         string what = Name(objectId);
         _floors = CellSurface.BuildFloors(placed.Polygons);
         Walls = CellWalls.Build(what, placed.Polygons, [], placed.Cylinders, "gfxObj");
-        (FloorMin, FloorMax) = (new Vector2(float.MaxValue), new Vector2(float.MinValue));
-        foreach (FloorTriangle t in _floors)
-        {
-            FloorMin = Vector2.Min(FloorMin, t.Min);
-            FloorMax = Vector2.Max(FloorMax, t.Max);
-        }
-
+        (FloorMin, FloorMax) = CellSurface.FloorBounds(_floors);
         (BoundsMin, BoundsMax) = placed.Bounds();
     }
 
