@@ -231,16 +231,28 @@ public sealed class CellSurface
             return false;
         }
 
-        foreach (FloorTriangle triangle in _floors)
+        TryFloorNormal(_floors, x, y, z, out normal);
+        return true;
+    }
+
+    /// <summary>
+    /// The unit normal (pointing up) of the first of <paramref name="floors"/> that lies under (x, y)
+    /// at exactly <paramref name="z"/> (landblock-local metres): the floor a sample there found.
+    /// False, with a zero normal, when none does.
+    /// </summary>
+    internal static bool TryFloorNormal(FloorTriangle[] floors, float x, float y, float z, out Vector3 normal)
+    {
+        foreach (FloorTriangle triangle in floors)
         {
             if (triangle.TrySample(x, y, out float at) && at == z)
             {
                 normal = triangle.Normal;
-                break;
+                return true;
             }
         }
 
-        return true;
+        normal = default;
+        return false;
     }
 
     /// <summary>

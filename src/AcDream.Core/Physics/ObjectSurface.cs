@@ -217,18 +217,8 @@ public sealed class ObjectSurface
     }
 
     /// <summary>The floor triangle's normal at a floor point found by <see cref="TryFloorBelow"/>.</summary>
-    internal Vector3 FloorNormal(float x, float y, float z)
-    {
-        foreach (FloorTriangle triangle in _floors)
-        {
-            if (triangle.TrySample(x, y, out float at) && at == z)
-            {
-                return triangle.Normal;
-            }
-        }
-
-        return Vector3.UnitZ;
-    }
+    internal Vector3 FloorNormal(float x, float y, float z) =>
+        CellSurface.TryFloorNormal(_floors, x, y, z, out Vector3 normal) ? normal : Vector3.UnitZ;
 
     private static ObjectSurface FromStab(Stab stab, uint cellId, IReadOnlyDictionary<uint, GfxObj> gfxObjs, IReadOnlyDictionary<uint, Setup> setups)
     {
