@@ -80,7 +80,7 @@ public sealed class ObjectSurface
     /// <exception cref="ArgumentNullException">An argument, or a list inside it, is null.</exception>
     /// <exception cref="ArgumentException">The id is not a GfxObj id (0x01xxxxxx); the frame is not finite or its orientation is shorter than 1e-6; a polygon has fewer than three vertices, names an unknown vertex, has a non-finite vertex or one placed farther than <see cref="PhysicsConstants.MaxCellCoordinate"/> from the landblock; the message names the object and what is wrong.</exception>
     public ObjectSurface(GfxObj gfxObj, Frame frame, uint cellId)
-        : this(CheckedId(gfxObj, g => g.Id, 0x01), cellId, Place(gfxObj, frame), isBuilding: false, [])
+        : this(CheckedId(gfxObj?.Id, 0x01, nameof(gfxObj)), cellId, Place(gfxObj!, frame), isBuilding: false, [])
     {
     }
 
@@ -92,7 +92,7 @@ public sealed class ObjectSurface
     /// <exception cref="ArgumentNullException">An argument, or a list inside it, is null.</exception>
     /// <exception cref="ArgumentException">The id is not a Setup id (0x02xxxxxx); as for a GfxObj (for the frame and for each part's polygons); also a part missing from <paramref name="gfxObjs"/>, a pose or scale list of the wrong length, a non-finite part scale or a part frame of the default pose that is not a placement, or a cylinder with a non-finite origin or a non-finite or negative size.</exception>
     public ObjectSurface(Setup setup, IReadOnlyDictionary<uint, GfxObj> gfxObjs, Frame frame, uint cellId)
-        : this(CheckedId(setup, s => s.Id, 0x02), cellId, Place(setup, gfxObjs, frame), isBuilding: false, [])
+        : this(CheckedId(setup?.Id, 0x02, nameof(setup)), cellId, Place(setup!, gfxObjs, frame), isBuilding: false, [])
     {
     }
 
@@ -303,16 +303,17 @@ public sealed class ObjectSurface
         return placed;
     }
 
-    private static uint CheckedId<T>(T model, Func<T, uint> id, uint kind)
-        where T : class
+    /// <summary>The model's id (null: the model is null), checked to be of <paramref name="kind"/> (its top byte).</summary>
+    private static uint CheckedId(uint? id, uint kind, string argument)
     {
-        ArgumentNullException.ThrowIfNull(model, typeof(T) == typeof(GfxObj) ? "gfxObj" : "setup");
-        uint value = id(model);
+        if (id is not uint value)
+        {
+            throw new ArgumentNullException(argument);
+        }
+
         if (value >> 24 != kind)
         {
-            throw new ArgumentException(
-                $"{Name(value)}: not a {(kind == 0x01 ? "GfxObj (0x01xxxxxx)" : "Setup (0x02xxxxxx)")} id.",
-                typeof(T) == typeof(GfxObj) ? "gfxObj" : "setup");
+            throw new ArgumentException($"{Name(value)}: not a {(kind == 0x01 ? "GfxObj (0x01xxxxxx)" : "Setup (0x02xxxxxx)")} id.", argument);
         }
 
         return value;
