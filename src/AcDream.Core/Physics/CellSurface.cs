@@ -75,19 +75,13 @@ public sealed class CellSurface
             throw new ArgumentException($"{cell}: Position.Origin {origin} is not finite.", nameof(envCell));
         }
 
-        // Normalised in double: a float LengthSquared overflows for a quaternion longer than ~1.8e19
-        // (and Quaternion.Normalize then returns zero, which rotates nothing).
-        double length = Math.Sqrt(((double)orientation.X * orientation.X) + ((double)orientation.Y * orientation.Y)
-            + ((double)orientation.Z * orientation.Z) + ((double)orientation.W * orientation.W));
-        if (!float.IsFinite(orientation.X) || !float.IsFinite(orientation.Y) || !float.IsFinite(orientation.Z) || !float.IsFinite(orientation.W)
-            || !(length >= PhysicsConstants.MinOrientationLength))
+        if (!TryUnitOrientation(orientation, out Quaternion unit))
         {
             throw new ArgumentException($"{cell}: Position.Orientation {orientation} is not a rotation (non-finite, or shorter than 1e-6).", nameof(envCell));
         }
 
         CellId = cellId;
         Origin = origin;
-        var unit = new Quaternion((float)(orientation.X / length), (float)(orientation.Y / length), (float)(orientation.Z / length), (float)(orientation.W / length));
         var transform = new CellTransform(cell, cellStruct, origin, unit);
 
         List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> physics = PlacePhysicsPolygons(cell, cellStruct, transform);
@@ -95,25 +89,8 @@ public sealed class CellSurface
         (Portals, _portalShapes) = BuildPortals(cell, cellId, envCell, cellStruct, transform);
         Walls = CellWalls.Build(cell, physics, _portalShapes, [], nameof(cellStruct));
 
-        if (_floors.Length > 0)
-        {
-            Vector2 min = _floors[0].Min, max = _floors[0].Max;
-            foreach (FloorTriangle t in _floors)
-            {
-                min = Vector2.Min(min, t.Min);
-                max = Vector2.Max(max, t.Max);
-            }
-
-            FloorMin = min;
-            FloorMax = max;
-            _grid = _floors.Length > PhysicsConstants.FloorGridMinTriangles ? new FloorGrid(_floors, min, max) : null;
-        }
-        else
-        {
-            // An empty box that contains nothing.
-            FloorMin = new Vector2(float.MaxValue);
-            FloorMax = new Vector2(float.MinValue);
-        }
+        (FloorMin, FloorMax) = FloorBounds(_floors);
+        _grid = _floors.Length > PhysicsConstants.FloorGridMinTriangles ? new FloorGrid(_floors, FloorMin, FloorMax) : null;
     }
 
     /// <summary>The engine's copy of <paramref name="cell"/> with the objects standing in it (its <c>StaticObjects</c>), and whether its building has a registered shell.</summary>
@@ -254,16 +231,28 @@ public sealed class CellSurface
             return false;
         }
 
-        foreach (FloorTriangle triangle in _floors)
+        TryFloorNormal(_floors, x, y, z, out normal);
+        return true;
+    }
+
+    /// <summary>
+    /// The unit normal (pointing up) of the first of <paramref name="floors"/> that lies under (x, y)
+    /// at exactly <paramref name="z"/> (landblock-local metres): the floor a sample there found.
+    /// False, with a zero normal, when none does.
+    /// </summary>
+    internal static bool TryFloorNormal(FloorTriangle[] floors, float x, float y, float z, out Vector3 normal)
+    {
+        foreach (FloorTriangle triangle in floors)
         {
             if (triangle.TrySample(x, y, out float at) && at == z)
             {
                 normal = triangle.Normal;
-                break;
+                return true;
             }
         }
 
-        return true;
+        normal = default;
+        return false;
     }
 
     /// <summary>
@@ -301,6 +290,19 @@ public sealed class CellSurface
         }
 
         return placed;
+    }
+
+    /// <summary>XY bounds of <paramref name="floors"/> (each triangle's, grown by the edge tolerance), landblock-local metres; with no floors, an empty box that contains nothing.</summary>
+    internal static (Vector2 Min, Vector2 Max) FloorBounds(FloorTriangle[] floors)
+    {
+        Vector2 min = new(float.MaxValue), max = new(float.MinValue);
+        foreach (FloorTriangle t in floors)
+        {
+            min = Vector2.Min(min, t.Min);
+            max = Vector2.Max(max, t.Max);
+        }
+
+        return (min, max);
     }
 
     /// <summary>The walkable polygons (winding normal Z ≥ <see cref="PhysicsConstants.FloorZ"/>), fan-triangulated.</summary>
@@ -354,6 +356,26 @@ public sealed class CellSurface
         }
 
         return (infos, shapes);
+    }
+
+    /// <summary>
+    /// <paramref name="q"/> normalised to a unit rotation; false when it is not finite or
+    /// shorter than <see cref="PhysicsConstants.MinOrientationLength"/>. Normalised in double: a float
+    /// LengthSquared overflows for a quaternion longer than ~1.8e19 (and Quaternion.Normalize then
+    /// returns zero, which rotates nothing).
+    /// </summary>
+    internal static bool TryUnitOrientation(Quaternion q, out Quaternion unit)
+    {
+        double length = Math.Sqrt(((double)q.X * q.X) + ((double)q.Y * q.Y) + ((double)q.Z * q.Z) + ((double)q.W * q.W));
+        if (!float.IsFinite(q.X) || !float.IsFinite(q.Y) || !float.IsFinite(q.Z) || !float.IsFinite(q.W)
+            || !(length >= PhysicsConstants.MinOrientationLength))
+        {
+            unit = default;
+            return false;
+        }
+
+        unit = new Quaternion((float)(q.X / length), (float)(q.Y / length), (float)(q.Z / length), (float)(q.W / length));
+        return true;
     }
 
     private static void ThrowIfNotFinite(float x, float y, float z)

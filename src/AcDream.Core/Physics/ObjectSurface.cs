@@ -43,13 +43,7 @@ public sealed class ObjectSurface
         string what = Name(objectId);
         _floors = CellSurface.BuildFloors(placed.Polygons);
         Walls = CellWalls.Build(what, placed.Polygons, [], placed.Cylinders, "gfxObj");
-        (FloorMin, FloorMax) = (new Vector2(float.MaxValue), new Vector2(float.MinValue));
-        foreach (FloorTriangle t in _floors)
-        {
-            FloorMin = Vector2.Min(FloorMin, t.Min);
-            FloorMax = Vector2.Max(FloorMax, t.Max);
-        }
-
+        (FloorMin, FloorMax) = CellSurface.FloorBounds(_floors);
         (BoundsMin, BoundsMax) = placed.Bounds();
     }
 
@@ -86,7 +80,7 @@ public sealed class ObjectSurface
     /// <exception cref="ArgumentNullException">An argument, or a list inside it, is null.</exception>
     /// <exception cref="ArgumentException">The id is not a GfxObj id (0x01xxxxxx); the frame is not finite or its orientation is shorter than 1e-6; a polygon has fewer than three vertices, names an unknown vertex, has a non-finite vertex or one placed farther than <see cref="PhysicsConstants.MaxCellCoordinate"/> from the landblock; the message names the object and what is wrong.</exception>
     public ObjectSurface(GfxObj gfxObj, Frame frame, uint cellId)
-        : this(CheckedId(gfxObj, g => g.Id, 0x01), cellId, Place(gfxObj, frame), isBuilding: false, [])
+        : this(CheckedId(gfxObj?.Id, 0x01, nameof(gfxObj)), cellId, Place(gfxObj!, frame), isBuilding: false, [])
     {
     }
 
@@ -98,7 +92,7 @@ public sealed class ObjectSurface
     /// <exception cref="ArgumentNullException">An argument, or a list inside it, is null.</exception>
     /// <exception cref="ArgumentException">The id is not a Setup id (0x02xxxxxx); as for a GfxObj (for the frame and for each part's polygons); also a part missing from <paramref name="gfxObjs"/>, a pose or scale list of the wrong length, a non-finite part scale or a part frame of the default pose that is not a placement, or a cylinder with a non-finite origin or a non-finite or negative size.</exception>
     public ObjectSurface(Setup setup, IReadOnlyDictionary<uint, GfxObj> gfxObjs, Frame frame, uint cellId)
-        : this(CheckedId(setup, s => s.Id, 0x02), cellId, Place(setup, gfxObjs, frame), isBuilding: false, [])
+        : this(CheckedId(setup?.Id, 0x02, nameof(setup)), cellId, Place(setup!, gfxObjs, frame), isBuilding: false, [])
     {
     }
 
@@ -223,18 +217,8 @@ public sealed class ObjectSurface
     }
 
     /// <summary>The floor triangle's normal at a floor point found by <see cref="TryFloorBelow"/>.</summary>
-    internal Vector3 FloorNormal(float x, float y, float z)
-    {
-        foreach (FloorTriangle triangle in _floors)
-        {
-            if (triangle.TrySample(x, y, out float at) && at == z)
-            {
-                return triangle.Normal;
-            }
-        }
-
-        return Vector3.UnitZ;
-    }
+    internal Vector3 FloorNormal(float x, float y, float z) =>
+        CellSurface.TryFloorNormal(_floors, x, y, z, out Vector3 normal) ? normal : Vector3.UnitZ;
 
     private static ObjectSurface FromStab(Stab stab, uint cellId, IReadOnlyDictionary<uint, GfxObj> gfxObjs, IReadOnlyDictionary<uint, Setup> setups)
     {
@@ -319,16 +303,17 @@ public sealed class ObjectSurface
         return placed;
     }
 
-    private static uint CheckedId<T>(T model, Func<T, uint> id, uint kind)
-        where T : class
+    /// <summary>The model's id (null: the model is null), checked to be of <paramref name="kind"/> (its top byte).</summary>
+    private static uint CheckedId(uint? id, uint kind, string argument)
     {
-        ArgumentNullException.ThrowIfNull(model, typeof(T) == typeof(GfxObj) ? "gfxObj" : "setup");
-        uint value = id(model);
+        if (id is not uint value)
+        {
+            throw new ArgumentNullException(argument);
+        }
+
         if (value >> 24 != kind)
         {
-            throw new ArgumentException(
-                $"{Name(value)}: not a {(kind == 0x01 ? "GfxObj (0x01xxxxxx)" : "Setup (0x02xxxxxx)")} id.",
-                typeof(T) == typeof(GfxObj) ? "gfxObj" : "setup");
+            throw new ArgumentException($"{Name(value)}: not a {(kind == 0x01 ? "GfxObj (0x01xxxxxx)" : "Setup (0x02xxxxxx)")} id.", argument);
         }
 
         return value;
@@ -350,15 +335,12 @@ public sealed class ObjectSurface
                 throw new ArgumentNullException(argument, $"{name}: the frame is null.");
             }
 
-            Quaternion q = frame.Orientation;
-            double length = Math.Sqrt(((double)q.X * q.X) + ((double)q.Y * q.Y) + ((double)q.Z * q.Z) + ((double)q.W * q.W));
-            if (!IsFinite(frame.Origin) || !float.IsFinite(q.X) || !float.IsFinite(q.Y) || !float.IsFinite(q.Z) || !float.IsFinite(q.W)
-                || !(length >= PhysicsConstants.MinOrientationLength))
+            if (!IsFinite(frame.Origin) || !CellSurface.TryUnitOrientation(frame.Orientation, out Quaternion unit))
             {
-                throw new ArgumentException($"{name}: frame ({frame.Origin}, {q}) is not a placement (non-finite, or an orientation shorter than 1e-6).", argument);
+                throw new ArgumentException($"{name}: frame ({frame.Origin}, {frame.Orientation}) is not a placement (non-finite, or an orientation shorter than 1e-6).", argument);
             }
 
-            return new Rigid(new Quaternion((float)(q.X / length), (float)(q.Y / length), (float)(q.Z / length), (float)(q.W / length)), frame.Origin);
+            return new Rigid(unit, frame.Origin);
         }
 
         public Vector3 Apply(Vector3 v) => Origin + Vector3.Transform(v, Rotation);
