@@ -115,7 +115,7 @@ public class ObjectHostTests
     [Fact]
     public void StaircaseScene_ClimbsToTheTopTreadAndBackDown_OnTheStairPieces()
     {
-        Scene scene = SceneReader.ReadFile(Path.Combine(RepositoryRoot(), "src", "AcDream.App", "Scenes", "outdoor-staircase.json"));
+        Scene scene = SceneReader.ReadFile(Path.Combine(TestWorlds.RepositoryRoot(), "src", "AcDream.App", "Scenes", "outdoor-staircase.json"));
         WalkRecord record = SceneRunner.Run(scene);
 
         record.Legs.Should().OnlyContain(l => l.Reached, string.Join(", ", record.Legs.Select(l => $"{l.Leg.Name}: {l.Reached}")));
@@ -189,16 +189,5 @@ public class ObjectHostTests
     {
         Action run = () => SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld(), maxFrames: 1);
         run.Should().Throw<ArgumentException>().WithMessage("*cottage*");
-    }
-
-    private static string RepositoryRoot()
-    {
-        string? folder = AppContext.BaseDirectory;
-        while (folder is not null && !File.Exists(Path.Combine(folder, "AcDream.sln")))
-        {
-            folder = Path.GetDirectoryName(folder);
-        }
-
-        return folder ?? throw new InvalidOperationException("AcDream.sln not found above the test folder.");
     }
 }
