@@ -162,8 +162,9 @@ public class ObjectHostTests
         for (int i = 0; i < groups.Count; i++)
         {
             ObjectSurface surface = world.ObjectSurfaces[i];
-            groups[i].Elements().Count(e => (string?)e.Attribute("class") == "object-floor").Should().Be(surface.GetFloorTriangles().Length);
-            groups[i].Elements().Count(e => (string?)e.Attribute("class") == "object-wall").Should().Be(surface.GetWalls().Length);
+            string which = $"object {i} ({groups[i].Attribute("data-object-id")?.Value}, surface 0x{surface.ObjectId:X8})";
+            groups[i].Elements().Count(e => (string?)e.Attribute("class") == "object-floor").Should().Be(surface.GetFloorTriangles().Length, $"{which}: one drawn floor per floor triangle");
+            groups[i].Elements().Count(e => (string?)e.Attribute("class") == "object-wall").Should().Be(surface.GetWalls().Length, $"{which}: one drawn wall per wall");
         }
 
         groups[1].Elements().Count(e => (string?)e.Attribute("class") == "object-floor").Should().BePositive("the plinth and ramp are floors");
