@@ -226,7 +226,7 @@ public sealed class MainJobTests : IDisposable
     [Fact]
     public void Run_RepositoryExampleScene_GivesTheSameWalkAsTheDefault()
     {
-        string file = Path.Combine(RepositoryRoot(), "src", "AcDream.App", "Scenes", "holtburg-walk.json");
+        string file = Path.Combine(TestWorlds.RepositoryRoot(), "src", "AcDream.App", "Scenes", "holtburg-walk.json");
         var output = new StringWriter();
 
         MainJob.Run(["--scene", file, "--out", _folder, "--quiet"], output, new StringWriter()).Should().Be(0);
@@ -434,18 +434,5 @@ public sealed class MainJobTests : IDisposable
         MainJob.Run(["--help"], output, new StringWriter()).Should().Be(0);
 
         output.ToString().Should().Contain("Usage:").And.Contain("--scene FILE").And.Contain("--frames N").And.Contain("--quiet");
-    }
-
-    private static string RepositoryRoot()
-    {
-        for (DirectoryInfo? dir = new(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            if (File.Exists(Path.Combine(dir.FullName, "AcDream.sln")))
-            {
-                return dir.FullName;
-            }
-        }
-
-        throw new InvalidOperationException($"AcDream.sln not found above {AppContext.BaseDirectory}");
     }
 }

@@ -115,7 +115,7 @@ public class ObjectHostTests
     [Fact]
     public void StaircaseScene_ClimbsToTheTopTreadAndBackDown_OnTheStairPieces()
     {
-        Scene scene = SceneReader.ReadFile(Path.Combine(RepositoryRoot(), "src", "AcDream.App", "Scenes", "outdoor-staircase.json"));
+        Scene scene = SceneReader.ReadFile(Path.Combine(TestWorlds.RepositoryRoot(), "src", "AcDream.App", "Scenes", "outdoor-staircase.json"));
         WalkRecord record = SceneRunner.Run(scene);
 
         record.Legs.Should().OnlyContain(l => l.Reached, string.Join(", ", record.Legs.Select(l => $"{l.Leg.Name}: {l.Reached}")));
@@ -162,8 +162,9 @@ public class ObjectHostTests
         for (int i = 0; i < groups.Count; i++)
         {
             ObjectSurface surface = world.ObjectSurfaces[i];
-            groups[i].Elements().Count(e => (string?)e.Attribute("class") == "object-floor").Should().Be(surface.GetFloorTriangles().Length);
-            groups[i].Elements().Count(e => (string?)e.Attribute("class") == "object-wall").Should().Be(surface.GetWalls().Length);
+            string which = $"object {i} ({groups[i].Attribute("data-object-id")?.Value}, surface 0x{surface.ObjectId:X8})";
+            groups[i].Elements().Count(e => (string?)e.Attribute("class") == "object-floor").Should().Be(surface.GetFloorTriangles().Length, $"{which}: one drawn floor per floor triangle");
+            groups[i].Elements().Count(e => (string?)e.Attribute("class") == "object-wall").Should().Be(surface.GetWalls().Length, $"{which}: one drawn wall per wall");
         }
 
         groups[1].Elements().Count(e => (string?)e.Attribute("class") == "object-floor").Should().BePositive("the plinth and ramp are floors");
@@ -189,16 +190,5 @@ public class ObjectHostTests
     {
         Action run = () => SceneRunner.Run(SceneReader.ReadDefault(), new HoltburgWorld(), maxFrames: 1);
         run.Should().Throw<ArgumentException>().WithMessage("*cottage*");
-    }
-
-    private static string RepositoryRoot()
-    {
-        string? folder = AppContext.BaseDirectory;
-        while (folder is not null && !File.Exists(Path.Combine(folder, "AcDream.sln")))
-        {
-            folder = Path.GetDirectoryName(folder);
-        }
-
-        return folder ?? throw new InvalidOperationException("AcDream.sln not found above the test folder.");
     }
 }

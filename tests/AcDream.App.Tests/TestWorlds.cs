@@ -11,6 +11,20 @@ internal static class TestWorlds
 {
     public const uint Holtburg = 0xA9B4FFFFu;
 
+    /// <summary>The repository's root: the first folder above the test binaries that holds AcDream.sln.</summary>
+    public static string RepositoryRoot()
+    {
+        for (DirectoryInfo? dir = new(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
+        {
+            if (File.Exists(Path.Combine(dir.FullName, "AcDream.sln")))
+            {
+                return dir.FullName;
+            }
+        }
+
+        throw new InvalidOperationException($"AcDream.sln not found above {AppContext.BaseDirectory}");
+    }
+
     /// <summary>Table entry i = i metres.</summary>
     public static float[] LinearTable() => Enumerable.Range(0, 256).Select(i => (float)i).ToArray();
 

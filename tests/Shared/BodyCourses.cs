@@ -36,6 +36,15 @@ internal sealed class BodyCourse
     /// <summary>Landblock-local double XY of a world position (exact: the origin is a multiple of 192).</summary>
     public ReferenceBody.Vec2 Local(Vector3 world) => new((double)world.X - Origin.X, (double)world.Y - Origin.Y);
 
+    /// <summary>The XY of a world position in a cell's frame (the cell turned about Z only), as <c>float</c>.</summary>
+    public Vector2 CellLocal(Frame frame, Vector3 world)
+    {
+        ReferenceBody.Vec2 local = Local(world);
+        Quaternion q = Quaternion.Normalize(frame.Orientation);
+        Vector3 back = Vector3.Transform(new Vector3((float)local.X - frame.Origin.X, (float)local.Y - frame.Origin.Y, 0), Quaternion.Conjugate(q));
+        return new Vector2(back.X, back.Y);
+    }
+
     /// <summary>
     /// A start in one of the areas at least <paramref name="clearance"/> from every wall in the body's
     /// band, settled on the floor by a zero move; null if none was found in 200 tries.

@@ -1,5 +1,4 @@
 using System.Numerics;
-using System.Reflection;
 using AcDream.Core.Physics;
 using AcDream.Testing;
 using Xunit.Abstractions;
@@ -32,8 +31,8 @@ public class BodyOpenGroundSeamTests(ITestOutputHelper output)
         engine.AddLandblock(east, FlatTerrain(GroundZ, east), [cell]);
 
         var options = new MovementOptions { Body = MoverBody.Player };
-        var planner = (BodyPlanner)Field(engine, "_planner");
-        var body = (BodyResolver)Field(engine, "_body");
+        BodyPlanner planner = EngineParts.Planner(engine);
+        BodyResolver body = EngineParts.Body(engine);
         Vector3 origin = engine.GetLandblockOrigin(Holtburg);
 
         // 0.5 m west of the seam, moving 1 m north into the wall: the swept box (x 191.5 ± about 0.35 m)
@@ -49,7 +48,4 @@ public class BodyOpenGroundSeamTests(ITestOutputHelper output)
         answer.Should().Be(plan);
         open.Should().BeFalse("the plan's box crosses the seam, where the shortcut cannot see the neighbour's walls");
     }
-
-    private static object Field(PhysicsEngine engine, string name) =>
-        typeof(PhysicsEngine).GetField(name, BindingFlags.NonPublic | BindingFlags.Instance)!.GetValue(engine)!;
 }

@@ -1,5 +1,4 @@
 using System.Numerics;
-using System.Reflection;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
 using AcDream.Core.Tests.Objects;
@@ -41,8 +40,8 @@ public class BodyOpenGroundTests(ITestOutputHelper output)
         }
 
         engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), HoltburgCells.Surfaces(), objects);
-        var planner = (BodyPlanner)Field(engine, "_planner");
-        var body = (BodyResolver)Field(engine, "_body");
+        BodyPlanner planner = EngineParts.Planner(engine);
+        BodyResolver body = EngineParts.Body(engine);
         Vector3 origin = engine.GetLandblockOrigin(Holtburg);
         var random = new Random(frame.Length + effects.Length);
         int shortcut = 0, planned = 0, nearWall = 0;
@@ -91,7 +90,4 @@ public class BodyOpenGroundTests(ITestOutputHelper output)
         planned.Should().BeGreaterThan(300);
         nearWall.Should().BeGreaterThan(100, "the shortcut is tried beside walls, not only in the open");
     }
-
-    private static object Field(PhysicsEngine engine, string name) =>
-        typeof(PhysicsEngine).GetField(name, BindingFlags.NonPublic | BindingFlags.Instance)!.GetValue(engine)!;
 }

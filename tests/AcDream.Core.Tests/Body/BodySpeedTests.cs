@@ -58,7 +58,7 @@ public class BodySpeedTests
                     BodyCall call = BodyCheck.Compare(course, pos, cell, delta, Step, options);
                     call.Overlap.Should().BeLessThanOrEqualTo(BodyCheck.OverlapLimit, $"{speed} m/s at {hz} Hz, frame {f}: {call}");
                     call.Tunnelled.Should().BeFalse($"{speed} m/s at {hz} Hz, frame {f}: {call}");
-                    float x = CellLocalX(course, cellFrame, call.Engine.Position);
+                    float x = course.CellLocal(cellFrame, call.Engine.Position).X;
                     x.Should().BeLessThan(partition, $"{speed} m/s at {hz} Hz, frame {f}: through the partition: {call}");
                     calls++;
                     atWalls += call.Engine.Outcome is ResolveOutcome.Slid or ResolveOutcome.Wall ? 1 : 0;
@@ -69,14 +69,5 @@ public class BodySpeedTests
         }
 
         atWalls.Should().BeGreaterThan(calls / 3, $"{speed} m/s at {hz} Hz: most calls meet a wall ({atWalls} of {calls}; worst overlap {worstOverlap:E2} m)");
-    }
-
-    /// <summary>The cell-local X of a world position (the cell turned about Z only).</summary>
-    private static float CellLocalX(BodyCourse course, Frame frame, Vector3 world)
-    {
-        ReferenceBody.Vec2 local = course.Local(world);
-        Quaternion q = Quaternion.Normalize(frame.Orientation);
-        Vector3 back = Vector3.Transform(new Vector3((float)local.X - frame.Origin.X, (float)local.Y - frame.Origin.Y, 0), Quaternion.Conjugate(q));
-        return back.X;
     }
 }

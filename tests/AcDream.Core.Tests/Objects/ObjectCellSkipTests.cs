@@ -67,7 +67,7 @@ public class ObjectCellSkipTests(ITestOutputHelper output)
             }
 
             moves++;
-            double nearest = Trees.Min(t => SegmentDistance(start, end, t));
+            double nearest = Trees.Min(t => ReferenceBody.Distance(new(t.X, t.Y), new(start.X, start.Y), new(end.X, end.Y)));
             var position = origin + new Vector3(start, TerrainZ);
             var delta = new Vector3(move, 0f);
             string what = $"{frame}, {effects}: from {start:R} by {move:R} (nearest trunk axis {nearest:R} m from the path)";
@@ -108,16 +108,5 @@ public class ObjectCellSkipTests(ITestOutputHelper output)
         output.WriteLine($"{frame}, {effects}: {moves} moves, {stopped} through a trunk's circle, {clear} clear of every trunk");
         stopped.Should().BeGreaterThan(100);
         clear.Should().BeGreaterThan(1000);
-    }
-
-    /// <summary>The distance from <paramref name="c"/> to the segment a–b, in double precision.</summary>
-    private static double SegmentDistance(Vector2 a, Vector2 b, Vector2 c)
-    {
-        double dx = (double)b.X - a.X, dy = (double)b.Y - a.Y;
-        double fx = (double)c.X - a.X, fy = (double)c.Y - a.Y;
-        double lengthSquared = (dx * dx) + (dy * dy);
-        double s = lengthSquared == 0 ? 0 : Math.Clamp(((fx * dx) + (fy * dy)) / lengthSquared, 0, 1);
-        double ex = fx - (s * dx), ey = fy - (s * dy);
-        return Math.Sqrt((ex * ex) + (ey * ey));
     }
 }

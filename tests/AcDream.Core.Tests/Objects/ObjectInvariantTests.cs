@@ -8,17 +8,24 @@ namespace AcDream.Core.Tests.Objects;
 
 /// <summary>
 /// The answers' invariants among objects, in both world frames (fixed point, honest ground, no NaN);
-/// and "off means free": an empty object list answers bit for bit as the three-argument AddLandblock.
+/// and "off means free": an empty object list answers bit for bit as the three-argument AddLandblock,
+/// and so do objects in a landblock far from the moves.
 /// </summary>
 public class ObjectInvariantTests(ITestOutputHelper output)
 {
     private const uint Holtburg = TestData.Holtburg;
     private const uint East = 0xAAB4FFFF;
 
+    /// <summary>A landblock three north of Holtburg, beyond every move's reach.</summary>
+    private const uint Far = 0xA9B7FFFF;
+
     /// <summary>Holtburg's cells with its two buildings, a staircase, a stair end piece and three trees outdoors.</summary>
-    private static List<ObjectSurface> Objects()
+    private static List<ObjectSurface> Objects() => [.. RealObjects.HoltburgBuildings(), .. OutdoorObjects()];
+
+    /// <summary>The staircase, the stair end piece and the three trees (landblock-local, outdoors).</summary>
+    private static List<ObjectSurface> OutdoorObjects()
     {
-        List<ObjectSurface> objects = RealObjects.HoltburgBuildings();
+        var objects = new List<ObjectSurface>();
         for (int k = 0; k < 6; k++)
         {
             objects.Add(new ObjectSurface(RealObjects.GfxObjs[ObjectPlacements.StairPiece], ObjectKit.At(new Vector3(110f + (0.5f * k), 30f, 94.2f + (0.4f * k)), 0f), 0));
@@ -126,6 +133,25 @@ public class ObjectInvariantTests(ITestOutputHelper output)
         without.AddLandblock(East, terrain, []);
         empty.AddLandblock(Holtburg, flat, HoltburgCells.Surfaces(), []);
         empty.AddLandblock(East, terrain, [], []);
+
+        // The three-argument call forwards an empty list, so without and empty share one path; the check
+        // with teeth is an engine that also holds objects, registered first, in a landblock far from every
+        // move: the staircase, the stair end piece and a tree every 6 m over the whole landblock, at the
+        // moves' landblock-local coordinates.
+        (Setup tree, Dictionary<uint, GfxObj> parts) = ObjectKit.Tree();
+        List<ObjectSurface> forest = OutdoorObjects();
+        for (int i = 0; i < 32; i++)
+        {
+            for (int j = 0; j < 32; j++)
+            {
+                forest.Add(new ObjectSurface(tree, parts, ObjectKit.At(new Vector3(3f + (6f * i), 3f + (6f * j), 94f), 0f), 0));
+            }
+        }
+
+        var elsewhere = new PhysicsEngine(Holtburg);
+        elsewhere.AddLandblock(Far, TestData.FlatTerrain(94f, Far), [], forest);
+        elsewhere.AddLandblock(Holtburg, flat, HoltburgCells.Surfaces(), []);
+        elsewhere.AddLandblock(East, terrain, [], []);
         List<CellSurface> cells = HoltburgCells.Surfaces();
         int moves = 0, indoors = 0, differentCell = 0;
         for (int walk = 0; walk < 120; walk++)
@@ -154,11 +180,16 @@ public class ObjectInvariantTests(ITestOutputHelper output)
                 var delta = new Vector3((float)((random.NextDouble() - 0.5) * 1.2), (float)((random.NextDouble() - 0.5) * 1.2), 0f) * (random.Next(12) == 0 ? 8 : 1);
                 ResolveResult a = without.Resolve(at.Position, at.CellId, delta, step, options);
                 ResolveResult b = empty.Resolve(at.Position, at.CellId, delta, step, options);
-                b.Should().Be(a, $"{effects}, walk {walk}, move {m}: {at} by {delta:R}, step {step:R}");
-                b.Position.Should().Be(a.Position);
-                b.SurfaceNormal.Should().Be(a.SurfaceNormal);
-                without.TryGetGround(a.Position, a.CellId, step, out float za, out Vector3 na, out uint oa).Should().Be(empty.TryGetGround(a.Position, a.CellId, step, out float zb, out Vector3 nb, out uint ob));
-                (za, na, oa).Should().Be((zb, nb, ob));
+                ResolveResult c = elsewhere.Resolve(at.Position, at.CellId, delta, step, options);
+                string what = $"{effects}, walk {walk}, move {m}: {at} by {delta:R}, step {step:R}";
+                b.Should().Be(a, what);
+                b.Position.Should().Be(a.Position, what);
+                b.SurfaceNormal.Should().Be(a.SurfaceNormal, what);
+                c.Should().Be(a, $"objects in a landblock far away: {what}");
+                without.TryGetGround(a.Position, a.CellId, step, out float za, out Vector3 na, out uint oa).Should().Be(empty.TryGetGround(a.Position, a.CellId, step, out float zb, out Vector3 nb, out uint ob), $"ground under {a}: {what}");
+                (za, na, oa).Should().Be((zb, nb, ob), $"ground under {a}: {what}");
+                elsewhere.TryGetGround(a.Position, a.CellId, step, out float zc, out Vector3 nc, out uint oc);
+                (zc, nc, oc).Should().Be((za, na, oa), $"ground under {a}, objects in a landblock far away: {what}");
                 moves++;
                 indoors += CellIds.IsIndoor(a.CellId) ? 1 : 0;
                 differentCell += a.CellId != at.CellId ? 1 : 0;

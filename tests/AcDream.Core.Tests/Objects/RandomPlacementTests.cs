@@ -2,6 +2,7 @@ using System.Numerics;
 using AcDream.App.Fixtures;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
+using AcDream.Testing;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Objects;
@@ -104,6 +105,8 @@ public class RandomPlacementTests(ITestOutputHelper output)
             }
 
             output.WriteLine($"seed {seed}: {compared} points ({onObjects} on object floors), {moves} moves; max error TryGetGround {maxGround:E2}, Resolve in place {maxResolve:E2}, moves {maxMove:E2}");
+            compared.Should().BeGreaterThan(1000, $"seed {seed}: most samples are compared with the reference");
+            moves.Should().BeGreaterThan(compared / 2, $"seed {seed}: most short moves are accepted and compared ({moves} of {compared})");
             onObjects.Should().BeGreaterThan(compared / 5, "the samples mostly land on object floors");
         }
     }
@@ -173,7 +176,7 @@ public class RandomPlacementTests(ITestOutputHelper output)
 
                 if (mover != "point")
                 {
-                    float d = Outline.Min(s => Distance(there, s.A, s.B));
+                    float d = (float)Outline.Min(s => ReferenceBody.Distance(new(there.X, there.Y), new(s.A.X, s.A.Y), new(s.B.X, s.B.Y)));
                     closest = MathF.Min(closest, d);
                     d.Should().BeGreaterThan(0.48f - 0.001f, $"{mover}, walk {walk}, move {m}: {at} → {r} overlaps the shell's wall");
                 }
@@ -201,11 +204,4 @@ public class RandomPlacementTests(ITestOutputHelper output)
 
     private static bool CrossesAt(Vector2 p0, Vector2 p1, float yLine, float min, float max, bool _ = true) =>
         CrossesAt(new Vector2(p0.Y, p0.X), new Vector2(p1.Y, p1.X), yLine, min, max);
-
-    private static float Distance(Vector2 p, Vector2 a, Vector2 b)
-    {
-        Vector2 ab = b - a;
-        float t = Math.Clamp(Vector2.Dot(p - a, ab) / ab.LengthSquared(), 0f, 1f);
-        return Vector2.Distance(p, a + (ab * t));
-    }
 }
