@@ -94,7 +94,7 @@ internal static class BodyAccuracy
                             BodyCall call = BodyCheck.Compare(course, pos, cell, delta, Step, options);
                             calls++;
                             atWalls += call.Engine.Outcome is ResolveOutcome.Slid or ResolveOutcome.Wall ? 1 : 0;
-                            tunnelled += call.Tunnelled || CellLocalX(course, frame, call.Engine.Position) >= west.X ? 1 : 0;
+                            tunnelled += call.Tunnelled || course.CellLocal(frame, call.Engine.Position).X >= west.X ? 1 : 0;
                             if (inGlobal)
                             {
                                 global = Math.Max(global, call.Overlap);
@@ -114,13 +114,6 @@ internal static class BodyAccuracy
         }
 
         o.WriteLine();
-    }
-
-    private static float CellLocalX(BodyCourse course, AcDream.Core.Dat.Frame frame, Vector3 world)
-    {
-        ReferenceBody.Vec2 local = course.Local(world);
-        Quaternion q = Quaternion.Normalize(frame.Orientation);
-        return Vector3.Transform(new Vector3((float)local.X - frame.Origin.X, (float)local.Y - frame.Origin.Y, 0), Quaternion.Conjugate(q)).X;
     }
 
     // ---------------------------------------------------------------- sliding courses

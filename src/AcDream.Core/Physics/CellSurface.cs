@@ -70,7 +70,7 @@ public sealed class CellSurface
         Frame position = envCell.Position ?? throw new ArgumentNullException(nameof(envCell), $"{cell}: envCell.Position is null.");
         Vector3 origin = position.Origin;
         Quaternion orientation = position.Orientation;
-        if (!IsFinite(origin))
+        if (!Geometry.IsFinite(origin))
         {
             throw new ArgumentException($"{cell}: Position.Origin {origin} is not finite.", nameof(envCell));
         }
@@ -135,7 +135,7 @@ public sealed class CellSurface
             return found;
         }
 
-        return ObjectGeometry.Raise(Objects, x, y, feetZ + stepUp, found, ref z) || found;
+        return ObjectGeometry.Raise(Objects, x, y, feetZ + stepUp, found, ref z, out _) || found;
     }
 
     /// <summary>Landblock-local XY bounds of the floor, grown by the edge tolerance; empty when there is no floor.</summary>
@@ -388,7 +388,6 @@ public sealed class CellSurface
         }
     }
 
-    private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 
     /// <summary>Moves a CellStruct's vertices to landblock-local space, validating them once each.</summary>
     private sealed class CellTransform(string cell, CellStruct cellStruct, Vector3 origin, Quaternion orientation)
@@ -429,7 +428,7 @@ public sealed class CellSurface
             }
 
             Vector3 local = vertex.Origin;
-            if (!IsFinite(local))
+            if (!Geometry.IsFinite(local))
             {
                 throw new ArgumentException($"{cell}: vertex {id} ({what}) is {local}; vertices must be finite.", nameof(cellStruct));
             }

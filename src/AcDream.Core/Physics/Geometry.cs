@@ -67,12 +67,6 @@ internal static class Geometry
         return Vector2.DistanceSquared(p, a + (ab * t));
     }
 
-    /// <summary>Distance from <paramref name="p"/> to the segment <paramref name="a"/>–<paramref name="b"/>.</summary>
-    public static float DistanceToSegment(Vector2 p, Vector2 a, Vector2 b)
-    {
-        Vector2 ab = b - a;
-        float lengthSquared = ab.LengthSquared();
-        float u = lengthSquared > 0f ? Math.Clamp(Vector2.Dot(p - a, ab) / lengthSquared, 0f, 1f) : 0f;
-        return Vector2.Distance(p, a + (ab * u));
-    }
+    /// <summary>Whether every coordinate of <paramref name="v"/> is finite.</summary>
+    public static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 }

@@ -74,13 +74,12 @@ internal ref struct MoveQuery
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static void Validate(Vector3 pos, uint cellId, Vector3 delta, float stepUp)
     {
-        if (!(IsFinite(pos) && IsFinite(delta) && float.IsFinite(stepUp) && stepUp >= 0f && IsCellOfTheWorld(cellId)))
+        if (!(Geometry.IsFinite(pos) && Geometry.IsFinite(delta) && float.IsFinite(stepUp) && stepUp >= 0f && IsCellOfTheWorld(cellId)))
         {
             ThrowInvalid(pos, cellId, delta, stepUp);
         }
     }
 
-    private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 
     private static bool IsCellOfTheWorld(uint cellId)
     {
@@ -94,12 +93,12 @@ internal ref struct MoveQuery
     [MethodImpl(MethodImplOptions.NoInlining)]
     private static void ThrowInvalid(Vector3 pos, uint cellId, Vector3 delta, float stepUp)
     {
-        if (!IsFinite(pos))
+        if (!Geometry.IsFinite(pos))
         {
             throw new ArgumentException($"currentPos {pos} must be finite.", "currentPos");
         }
 
-        if (!IsFinite(delta))
+        if (!Geometry.IsFinite(delta))
         {
             throw new ArgumentException($"delta {delta} must be finite.", nameof(delta));
         }

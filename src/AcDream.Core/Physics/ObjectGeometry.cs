@@ -28,10 +28,6 @@ internal static class ObjectGeometry
         return objectIndex >= 0;
     }
 
-    /// <inheritdoc cref="Raise(ReadOnlySpan{ObjectSurface}, float, float, float, bool, ref float, out int)"/>
-    public static bool Raise(ReadOnlySpan<ObjectSurface> objects, float x, float y, float ceilingZ, bool found, ref float z) =>
-        Raise(objects, x, y, ceilingZ, found, ref z, out _);
-
     /// <summary>
     /// <see cref="Raise(ReadOnlySpan{ObjectSurface}, float, float, float, bool, ref float, out int)"/> over
     /// the outdoor objects a landblock lists over the square of its fine grid (<see cref="LandblockEntry.ObjectsAt"/>) under (x, y).

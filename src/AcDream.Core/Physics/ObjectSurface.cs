@@ -289,7 +289,7 @@ public sealed class ObjectSurface
 
         foreach ((CylSphere? cylinder, int i) in (setup.CylSpheres ?? []).Select((c, i) => (c, i)))
         {
-            if (cylinder is null || !IsFinite(cylinder.Origin) || !float.IsFinite(cylinder.Radius) || !float.IsFinite(cylinder.Height)
+            if (cylinder is null || !Geometry.IsFinite(cylinder.Origin) || !float.IsFinite(cylinder.Radius) || !float.IsFinite(cylinder.Height)
                 || cylinder.Radius < 0f || cylinder.Height < 0f)
             {
                 throw new ArgumentException(
@@ -321,7 +321,6 @@ public sealed class ObjectSurface
 
     private static string Name(uint id) => $"object 0x{id:X8}";
 
-    private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 
     /// <summary>A rotation and translation, the rotation a unit quaternion.</summary>
     private readonly record struct Rigid(Quaternion Rotation, Vector3 Origin)
@@ -335,7 +334,7 @@ public sealed class ObjectSurface
                 throw new ArgumentNullException(argument, $"{name}: the frame is null.");
             }
 
-            if (!IsFinite(frame.Origin) || !CellSurface.TryUnitOrientation(frame.Orientation, out Quaternion unit))
+            if (!Geometry.IsFinite(frame.Origin) || !CellSurface.TryUnitOrientation(frame.Orientation, out Quaternion unit))
             {
                 throw new ArgumentException($"{name}: frame ({frame.Origin}, {frame.Orientation}) is not a placement (non-finite, or an orientation shorter than 1e-6).", argument);
             }
@@ -396,7 +395,7 @@ public sealed class ObjectSurface
                         throw new ArgumentException($"{what}: physics polygon {key} names vertex {ids[i]}, which the vertex array lacks.", "gfxObj");
                     }
 
-                    if (!IsFinite(vertex.Origin))
+                    if (!Geometry.IsFinite(vertex.Origin))
                     {
                         throw new ArgumentException($"{what}: vertex {ids[i]} (physics polygon {key}) is {vertex.Origin}; vertices must be finite.", "gfxObj");
                     }

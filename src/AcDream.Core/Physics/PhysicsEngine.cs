@@ -131,7 +131,7 @@ public sealed class PhysicsEngine
     /// <exception cref="ArgumentException">A coordinate or the step is not finite, or the step is negative.</exception>
     public bool TryGetGround(Vector3 worldPosition, uint cellId, float stepUpHeight, out float groundZ, out Vector3 normal, out uint objectId)
     {
-        if (!IsFinite(worldPosition))
+        if (!Geometry.IsFinite(worldPosition))
         {
             throw new ArgumentException($"world position {worldPosition} must be finite.", nameof(worldPosition));
         }
@@ -189,7 +189,7 @@ public sealed class PhysicsEngine
     /// <exception cref="ArgumentException">A coordinate or the reach is not finite, or the reach is negative.</exception>
     public uint ObjectWallNear(Vector3 worldPosition, uint cellId, float reach)
     {
-        if (!IsFinite(worldPosition))
+        if (!Geometry.IsFinite(worldPosition))
         {
             throw new ArgumentException($"world position {worldPosition} must be finite.", nameof(worldPosition));
         }
@@ -217,7 +217,7 @@ public sealed class PhysicsEngine
                     continue;
                 }
 
-                float distance = w.IsUpright ? Geometry.DistanceToSegment(p, w.A, w.B) - w.Radius : Vector2.Distance(p, Vector2.Clamp(p, w.Min, w.Max));
+                float distance = w.IsUpright ? MathF.Sqrt(Geometry.DistanceSquaredToSegment(p, w.A, w.B)) - w.Radius : Vector2.Distance(p, Vector2.Clamp(p, w.Min, w.Max));
                 if (distance <= bestDistance)
                 {
                     (best, bestDistance) = (o.ObjectId, distance);
@@ -559,7 +559,6 @@ public sealed class PhysicsEngine
             : result;
     }
 
-    private static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
 
     private static (int X, int Y) CheckedCentre(uint centerLandblockId)
     {
