@@ -44,28 +44,28 @@ internal static class BodySweep
     }
 
     /// <summary>
-    /// Slides a body of contact radius <paramref name="radius"/> from <paramref name="p"/> along
-    /// <paramref name="d"/> among the walls of <paramref name="walls"/> in the band
-    /// [<paramref name="zLow"/>, <paramref name="zHigh"/>], writing the path's corners to
-    /// <paramref name="points"/> (landblock-local; room for <see cref="PhysicsConstants.MaxBodyContacts"/> + 2).
-    /// A body that starts closer to a wall than the contact radius by more than <paramref name="sink"/>
-    /// (and less than four times it) is first put back at the contact radius.
+    /// Slides a body (<paramref name="move"/>: its contact radius, start, move and band) among the walls of
+    /// <paramref name="walls"/>, writing the path's corners to <paramref name="points"/> (landblock-local;
+    /// room for <see cref="PhysicsConstants.MaxBodyContacts"/> + 2). A body that starts closer to a wall
+    /// than the contact radius by more than its sink (and less than four times it) is first put back at
+    /// the contact radius.
     /// </summary>
     /// <remarks>
     /// Why the push back: every answer is rounded to the world frame, and a body moving along a wall
     /// with the same delta frame after frame is rounded the same way each time, so without it the body
     /// sank into the wall by up to half a float spacing per frame (1 mm after 350 frames in a centred
-    /// frame, its whole radius after 470 at the far corner of the global one). <paramref name="sink"/> is
+    /// frame, its whole radius after 470 at the far corner of the global one). The sink is
     /// half the skin the contact radius keeps beyond the body's: what one call's rounding may take stays
     /// inside the skin, and a body at rest in a corner (sunk by less) is not moved, so it stays bit for
     /// bit. Deeper overlaps are not this rounding (a body placed in a wall by its caller) and are left
     /// alone; so is a push back into another wall (a narrow wedge).
     /// </remarks>
-    public static void Slide(in WallSet walls, Vector2 p, Vector2 d, float radius, float sink, float zLow, float zHigh, Span<Vector2> points, ref Path path)
+    public static void Slide(in WallSet walls, in BodyMove move, Span<Vector2> points, ref Path path)
     {
+        Vector2 p = move.P, d = move.D;
+        float sink = move.Sink;
         points[0] = p;
         path.Count = 1;
-        float graze = radius - sink - PhysicsConstants.ContactTolerance;
         float together = MathF.Max(PhysicsConstants.ContactTolerance, 2f * sink);
         Vector2 position = p, rest = d, previous = default, unprojected = d;
         for (int contact = 0; contact <= PhysicsConstants.MaxBodyContacts; contact++)
@@ -79,24 +79,23 @@ internal static class BodySweep
             Vector2 normal = default;
             if (contact < PhysicsConstants.MaxBodyContacts)
             {
-                float depth = 0f;
-                Vector2 outward = default;
-                walls.Sweep(position, rest, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
-                if (contact == 0 && depth > sink && depth < 4f * sink)
+                var hit = WallHit.None;
+                walls.Sweep(move.At(position, rest), ref hit);
+                (t, normal) = (hit.T, hit.Normal);
+                if (contact == 0 && hit.Depth > sink && hit.Depth < 4f * sink)
                 {
                     // Sunk into the skin by rounding: back out to the contact radius, unless that pushes
                     // the body into another wall.
-                    Vector2 pushed = position + (outward * depth);
-                    float pushedT = 1f, pushedDepth = 0f;
-                    Vector2 pushedNormal = default, pushedOutward = default;
-                    walls.Sweep(pushed, rest, radius, graze, zLow, zHigh, ref pushedT, ref pushedNormal, ref pushedDepth, ref pushedOutward);
-                    if (pushedDepth <= sink)
+                    Vector2 pushed = position + (hit.Outward * hit.Depth);
+                    var pushedHit = WallHit.None;
+                    walls.Sweep(move.At(pushed, rest), ref pushedHit);
+                    if (pushedHit.Depth <= sink)
                     {
                         position = pushed;
                         points[path.Count++] = position;
                         path.Contacts++;
-                        path.Normal = outward;
-                        (t, normal) = (pushedT, pushedNormal);
+                        path.Normal = hit.Outward;
+                        (t, normal) = (pushedHit.T, pushedHit.Normal);
                     }
                 }
             }
@@ -168,19 +167,23 @@ internal static class BodySweep
         || Vector2.Dot(slide, d) < ConcaveTolerance * slide.Length() * d.Length();
 
     /// <summary>
-    /// Earliest fraction <paramref name="t"/> (below the one given) of the move p → p + d at which a
-    /// disc of <paramref name="radius"/> centred on the moving point touches the segment a–b, and the
-    /// unit normal from the segment to the centre there. A disc already touching the segment beside its
-    /// ends (within <see cref="PhysicsConstants.ContactTolerance"/>) and moving towards it is stopped at
-    /// t = 0; one moving away or along it (within <see cref="ParallelTolerance"/>) is free. Else the
-    /// segment is met where the move reaches its contact radius beside it (the offset lines: a centre that
-    /// reaches that depth beyond an end, where it comes beside), or at an end, unless it only grazes that
-    /// (closer than <paramref name="graze"/>: see <see cref="SweepPoint"/>). A disc overlapping the segment
-    /// by more than <paramref name="depth"/> sets it to the overlap and <paramref name="outward"/> to the
-    /// normal there.
+    /// Earliest fraction <c>hit.T</c> (below the one given) of the move p → p + d of <paramref name="move"/>
+    /// at which its disc, widened by <paramref name="widen"/> (a cylinder's radius, else 0), touches the
+    /// segment a–b, and the unit normal from the segment to the centre there (<c>hit.Normal</c>). A disc
+    /// already touching the segment beside its ends (within <see cref="PhysicsConstants.ContactTolerance"/>)
+    /// and moving towards it is stopped at t = 0; one moving away or along it (within
+    /// <see cref="ParallelTolerance"/>) is free. Else the segment is met where the move reaches its contact
+    /// radius beside it (the offset lines: a centre that reaches that depth beyond an end, where it comes
+    /// beside), or at an end, unless it only grazes that (closer than the graze, widened alike: see
+    /// <see cref="SweepPoint"/>). A disc overlapping the segment by more than <c>hit.Depth</c> sets it to the
+    /// overlap and <c>hit.Outward</c> to the normal there.
     /// </summary>
-    public static void SweepSegment(Vector2 p, Vector2 d, Vector2 a, Vector2 b, float radius, float graze, ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
+    public static void SweepSegment(in BodyMove move, Vector2 a, Vector2 b, float widen, ref WallHit hit)
     {
+        Vector2 p = move.P, d = move.D;
+        float radius = move.Radius + widen, graze = move.Graze + widen;
+        ref float t = ref hit.T;
+        ref Vector2 normal = ref hit.Normal;
         Vector2 ab = b - a;
         float lengthSquared = ab.LengthSquared();
         float u0 = lengthSquared > 0f ? Math.Clamp(Vector2.Dot(p - a, ab) / lengthSquared, 0f, 1f) : 0f;
@@ -190,9 +193,9 @@ internal static class BodySweep
         Vector2 n = distanceSquared == 0f ? OffsetNormal(ab, -d)
             : beside ? OffsetNormal(ab, away)      // beside the segment: its own normal, the same at every point (and as the offset lines' below)
             : away / MathF.Sqrt(distanceSquared);  // at an end: the circle's
-        if (distanceSquared < radius * radius && radius - MathF.Sqrt(distanceSquared) > depth)
+        if (distanceSquared < radius * radius && radius - MathF.Sqrt(distanceSquared) > hit.Depth)
         {
-            (depth, outward) = (radius - MathF.Sqrt(distanceSquared), n);
+            (hit.Depth, hit.Outward) = (radius - MathF.Sqrt(distanceSquared), n);
         }
 
         float touch = radius + PhysicsConstants.ContactTolerance;
@@ -223,18 +226,18 @@ internal static class BodySweep
                 // the sink's depth, or where it is. One that gets that near beyond an end and then comes
                 // beside the segment having only grazed the end (see SweepPoint) is met where it comes beside.
                 float line = s0 >= radius ? radius : MathF.Min(s0, graze + PhysicsConstants.ContactTolerance);
-                float hit = (s0 - line) / approach;
+                float at = (s0 - line) / approach;
                 float ua = Vector2.Dot(p - a, ab) / lengthSquared, du = Vector2.Dot(d, ab) / lengthSquared;
-                float u = ua + (du * hit);
+                float u = ua + (du * at);
                 if ((u < 0f && du > 0f) || (u > 1f && du < 0f))
                 {
                     float enter = u < 0f ? -ua / du : (1f - ua) / du;
-                    (hit, u) = s0 - (approach * enter) >= graze ? (enter, u < 0f ? 0f : 1f) : (1f, u);
+                    (at, u) = s0 - (approach * enter) >= graze ? (enter, u < 0f ? 0f : 1f) : (1f, u);
                 }
 
-                if (hit < t && u >= 0f && u <= 1f)
+                if (at < t && u >= 0f && u <= 1f)
                 {
-                    (t, normal) = (hit, side);
+                    (t, normal) = (at, side);
                 }
             }
         }
@@ -314,24 +317,57 @@ internal static class BodySweep
     /// frame), cut to the band first: the part of the polygon between the two heights, seen from above.
     /// </summary>
     [SkipLocalsInit] // the cut buffers are written before they are read
-    public static void SweepPolygon(
-        ReadOnlySpan<Vector3> vertices, Vector2 offset, Vector2 p, Vector2 d, float radius, float graze, float zLow, float zHigh,
-        ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
+    public static void SweepPolygon(ReadOnlySpan<Vector3> vertices, Vector2 offset, in BodyMove move, ref WallHit hit)
     {
         Span<Vector3> low = stackalloc Vector3[2 * vertices.Length]; // a cut adds at most one vertex per edge
-        int lowCount = Clip(vertices, low, zLow, keepAbove: true);
+        int lowCount = Clip(vertices, low, move.ZLow, keepAbove: true);
         if (lowCount == 0)
         {
             return;
         }
 
         Span<Vector3> band = stackalloc Vector3[2 * lowCount];
-        int count = Clip(low[..lowCount], band, zHigh, keepAbove: false);
+        int count = Clip(low[..lowCount], band, move.ZHigh, keepAbove: false);
         for (int i = 0, j = count - 1; i < count; j = i++)
         {
             var a = new Vector2(band[j].X + offset.X, band[j].Y + offset.Y);
             var b = new Vector2(band[i].X + offset.X, band[i].Y + offset.Y);
-            SweepSegment(p, d, a, b, radius, graze, ref t, ref normal, ref depth, ref outward);
+            SweepSegment(in move, a, b, 0f, ref hit);
+        }
+    }
+
+    /// <summary>
+    /// One cell's or object's walls (their landblock frame <paramref name="offset"/> from the move's) whose
+    /// bounds meet the sweep's box (<paramref name="lo"/>–<paramref name="hi"/>, in their frame) and whose
+    /// heights meet the move's band.
+    /// </summary>
+    public static void SweepWalls(CellWalls walls, Vector2 offset, Vector2 lo, Vector2 hi, in BodyMove move, ref WallHit hit)
+    {
+        if (walls.Min.X > hi.X || walls.Max.X < lo.X || walls.Min.Y > hi.Y || walls.Max.Y < lo.Y)
+        {
+            return;
+        }
+
+        ReadOnlySpan<Vector3> vertices = walls.Vertices;
+        foreach (ref readonly WallPolygon wall in walls.Polygons.AsSpan())
+        {
+            if (wall.ZMax <= move.ZLow || wall.ZMin >= move.ZHigh
+                || wall.Min.X > hi.X || wall.Max.X < lo.X || wall.Min.Y > hi.Y || wall.Max.Y < lo.Y)
+            {
+                continue;
+            }
+
+            if (wall.IsUpright)
+            {
+                // A cylinder (Radius > 0) is met at the sum of the radii, and so is its graze: the graze is
+                // measured from the contact radius, else every move coming no nearer the axis than the body's
+                // own graze was taken for a graze and the body walked into the trunk up to its own radius.
+                SweepSegment(in move, wall.A + offset, wall.B + offset, wall.Radius, ref hit);
+            }
+            else
+            {
+                SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, in move, ref hit);
+            }
         }
     }
 
@@ -358,4 +394,37 @@ internal static class BodySweep
 
         return count;
     }
+}
+
+/// <summary>
+/// One sweep of a body among walls: a disc of contact radius <see cref="Radius"/> whose centre moves from
+/// <see cref="P"/> along <see cref="D"/>, meeting walls where they reach between <see cref="ZLow"/> and
+/// <see cref="ZHigh"/>; a wall's end it comes no nearer to than <see cref="Graze"/> is grazed, not met, and
+/// rounding may leave it up to <see cref="Sink"/> inside its contact radius (see <see cref="BodySweep.Slide"/>).
+/// Landblock-local metres of the mover's landblock.
+/// </summary>
+internal readonly record struct BodyMove(Vector2 P, Vector2 D, float Radius, float Graze, float Sink, float ZLow, float ZHigh)
+{
+    /// <summary>A move of a body of contact radius <paramref name="radius"/> whose rounding sink is <paramref name="sink"/>: its graze is the radius less the sink and the contact tolerance.</summary>
+    public static BodyMove Of(Vector2 p, Vector2 d, float radius, float sink, float zLow, float zHigh) =>
+        new(p, d, radius, radius - sink - PhysicsConstants.ContactTolerance, sink, zLow, zHigh);
+
+    /// <summary>This move's body and band, from <paramref name="p"/> along <paramref name="d"/>.</summary>
+    public BodyMove At(Vector2 p, Vector2 d) => this with { P = p, D = d };
+}
+
+/// <summary>
+/// The running answer of a sweep: the earliest contact so far (<see cref="T"/>, the fraction of the move,
+/// 1 for none; <see cref="Normal"/>, the wall's unit normal seen from above, pointing at the body) and the
+/// deepest overlap at the start (<see cref="Depth"/> metres, with <see cref="Outward"/>, the unit normal out of it).
+/// </summary>
+internal struct WallHit
+{
+    public float T;
+    public Vector2 Normal;
+    public float Depth;
+    public Vector2 Outward;
+
+    /// <summary>No contact and no overlap yet.</summary>
+    public static WallHit None => new() { T = 1f };
 }

@@ -9,12 +9,12 @@ namespace AcDream.Core.Physics;
 /// search from its cell, and turns the landing into an answer (the step check, walkable slope on
 /// terrain beyond a door, the ground rule for refusals).
 /// </summary>
-internal sealed class IndoorResolver(LandblockRegistry registry, WorldFrame frame, PortalTraversal portals)
+internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
 {
     public ResolveResult Resolve(ref MoveQuery q)
     {
         int lbX = CellIds.LandblockX(q.CellId), lbY = CellIds.LandblockY(q.CellId);
-        LandblockEntry? entry = registry.Get(lbX, lbY);
+        LandblockEntry? entry = q.Lands.Get(lbX, lbY);
         if (entry is null)
         {
             return new ResolveResult(q.Position, q.CellId, true) { Outcome = ResolveOutcome.Held }; // the cell's landblock is not loaded

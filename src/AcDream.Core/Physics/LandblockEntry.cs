@@ -21,11 +21,9 @@ internal sealed class LandblockEntry
     /// <param name="y">Landblock Y.</param>
     /// <param name="terrain">Its terrain.</param>
     /// <param name="cells">Its cells, ascending ids (with their objects).</param>
-    /// <param name="outdoorObjects">Its own outdoor objects, then the neighbours' that reach over it (moved into its frame).</param>
-    /// <param name="ownObjects">How many of <paramref name="outdoorObjects"/> are its own.</param>
-    public LandblockEntry(int x, int y, TerrainSurface terrain, CellSurface[] cells, ObjectSurface[] outdoorObjects, int ownObjects)
+    /// <param name="outdoorObjects">Its outdoor objects (its <c>LandBlockInfo</c>'s objects and building shells).</param>
+    public LandblockEntry(int x, int y, TerrainSurface terrain, CellSurface[] cells, ObjectSurface[] outdoorObjects)
     {
-        OwnObjectCount = ownObjects;
         X = x;
         Y = y;
         Terrain = terrain;
@@ -53,11 +51,31 @@ internal sealed class LandblockEntry
             PortalTargets[i] = targets;
         }
 
-        EntryBuckets = BuildBuckets(cells, static c => c.HasFloor ? (c.FloorMin, c.FloorMax) : null);
-        WallBuckets = BuildBuckets(cells, static c => c.Walls.Polygons.Length > 0 ? (c.Walls.Min, c.Walls.Max) : null);
-        (ObjectGridStarts, ObjectGridItems) = BuildObjectGrid(outdoorObjects);
+        EntryBuckets = BuildBuckets(cells);
+        MetOutdoors = Buildings(PortalTargets);
+        var cellBoxes = new (Vector2 Min, Vector2 Max)[cells.Length];
+        var outdoorCellBoxes = new (Vector2 Min, Vector2 Max)[cells.Length];
+        Vector2 min = new(float.MaxValue), max = new(float.MinValue);
+        for (int i = 0; i < cells.Length; i++)
+        {
+            cellBoxes[i] = cells[i].WallBounds();
+            outdoorCellBoxes[i] = MetOutdoors[i] ? cellBoxes[i] : (new Vector2(float.MaxValue), new Vector2(float.MinValue));
+            (min, max) = (Vector2.Min(min, outdoorCellBoxes[i].Min), Vector2.Max(max, outdoorCellBoxes[i].Max));
+        }
+
+        CellWalls = BoxGrid.Build(cellBoxes, CellWallSquare);
+        OutdoorCellWalls = BoxGrid.Build(outdoorCellBoxes, CellWallSquare);
+        var objectBoxes = new (Vector2 Min, Vector2 Max)[outdoorObjects.Length];
+        for (int i = 0; i < outdoorObjects.Length; i++)
+        {
+            objectBoxes[i] = ObjectBox.GridBounds(outdoorObjects[i]);
+            (min, max) = (Vector2.Min(min, objectBoxes[i].Min), Vector2.Max(max, objectBoxes[i].Max));
+        }
+
+        Objects = BoxGrid.Fixed(objectBoxes, ObjectGridSide, ObjectGridSize);
         ObjectBoxes = Array.ConvertAll(outdoorObjects, static o => new ObjectBox(o));
-        ObjectCells = ObjectCellMask(ObjectGridStarts);
+        ObjectCells = outdoorObjects.Length == 0 ? 0 : ObjectCellMask(Objects);
+        (OutdoorMin, OutdoorMax) = (min, max);
     }
 
     /// <summary>Squares per side of the outdoor objects' fine grid (<see cref="ObjectGridSize"/> metres each).</summary>
@@ -65,6 +83,9 @@ internal sealed class LandblockEntry
 
     /// <summary>Side of a square of the outdoor objects' fine grid, metres.</summary>
     public const float ObjectGridSize = PhysicsConstants.LandblockSize / ObjectGridSide;
+
+    /// <summary>Side of a square of the cells' wall grids, metres (about a room's width).</summary>
+    private const float CellWallSquare = 4f;
 
     public int X { get; }
 
@@ -85,135 +106,70 @@ internal sealed class LandblockEntry
     public int[][] EntryBuckets { get; }
 
     /// <summary>
-    /// Per outdoor cell: the indices of the cells whose walls' bounds overlap it (clamped to the
-    /// landblock). A body outdoors meets only these cells' walls.
+    /// Per cell: whether outdoor movers meet its walls: it belongs to a building, a group of cells joined
+    /// by portals of which one leads to the outdoors. A dungeon's cells (no way out but by portal objects)
+    /// are met only from inside.
     /// </summary>
-    public int[][] WallBuckets { get; }
+    public bool[] MetOutdoors { get; }
 
-    /// <summary>
-    /// The objects standing outdoors over this landblock, in its frame: its own (a <c>LandBlockInfo</c>'s
-    /// objects and building shells; the first <see cref="OwnObjectCount"/>), then those of its
-    /// neighbours whose bounds reach over it, moved into its frame.
-    /// </summary>
+    /// <summary>The cells' walls and their objects' walls, by the bounds seen from above (<see cref="CellSurface.WallBounds"/>): what a body indoors meets. Null when no cell has walls.</summary>
+    public BoxGrid? CellWalls { get; }
+
+    /// <summary>As <see cref="CellWalls"/>, the cells <see cref="MetOutdoors"/> only: what a body outdoors meets of the cells.</summary>
+    public BoxGrid? OutdoorCellWalls { get; }
+
+    /// <summary>The objects standing outdoors in this landblock (its <c>LandBlockInfo</c>'s objects and building shells), in its frame.</summary>
     public ObjectSurface[] OutdoorObjects { get; }
 
     /// <summary>The boxes of <see cref="OutdoorObjects"/>, by the same index, in one array: a move's tests read them, not the objects.</summary>
     public ObjectBox[] ObjectBoxes { get; }
 
-    /// <summary>How many of <see cref="OutdoorObjects"/> are the landblock's own.</summary>
-    public int OwnObjectCount { get; }
-
-    /// <summary>This landblock with <paramref name="reaching"/> as the neighbours' objects over it (its own kept): a new entry.</summary>
-    public LandblockEntry WithNeighbourObjects(ObjectSurface[] reaching) =>
-        new(X, Y, Terrain, Cells, [.. OutdoorObjects.AsSpan(0, OwnObjectCount), .. reaching], OwnObjectCount);
-
     /// <summary>
-    /// The outdoor objects' fine grid (<see cref="ObjectGridSide"/>² squares of <see cref="ObjectGridSize"/> m,
-    /// compressed rows): the objects over square k (index column·side + row) are
-    /// <c>ObjectGridItems[ObjectGridStarts[k] .. ObjectGridStarts[k + 1]]</c>, those whose bounds (and floors'
-    /// bounds) overlap it, clamped to the landblock. A point mover's floor and wall questions and the
-    /// body's gathering of object walls look only at these; empty when the landblock has no outdoor objects.
+    /// The outdoor objects' fine grid (<see cref="ObjectGridSide"/>² squares of <see cref="ObjectGridSize"/> m
+    /// from the landblock's corner): each object over the squares its bounds and its floors' bounds (grown by
+    /// the edge tolerance) overlap, those beyond the landblock over its border squares. A point mover's floor
+    /// and wall questions and the body's object walls look only at these.
     /// </summary>
-    public int[] ObjectGridStarts { get; }
-
-    /// <inheritdoc cref="ObjectGridStarts"/>
-    public int[] ObjectGridItems { get; }
+    public BoxGrid Objects { get; }
 
     /// <summary>
     /// Per outdoor cell (bit <see cref="CellIds.OutdoorCellNumber"/> − 1): set when a square of the fine
     /// grid on the cell or within one square of it lists an outdoor object. A box that reaches less than
-    /// <see cref="ObjectCellReach"/> beyond a cell whose bit is clear meets no outdoor object: it stays on
-    /// those squares. What lets a move far from every object skip them with one bit read.
+    /// <see cref="ObjectCellReach"/> beyond a cell whose bit is clear meets no outdoor object of this
+    /// landblock: it stays on those squares. What lets a move far from every object skip them with one bit read.
     /// </summary>
     public ulong ObjectCells { get; }
 
-    /// <summary>How far beyond an outdoor cell <see cref="ObjectCells"/> answers for, metres: one square, less twice <see cref="ObjectGeometry.NearMargin"/>.</summary>
-    public const float ObjectCellReach = ObjectGridSize - (2f * ObjectGeometry.NearMargin);
+    /// <summary>How far beyond an outdoor cell <see cref="ObjectCells"/> answers for, metres: one square, less twice <see cref="PhysicsConstants.NearMargin"/>.</summary>
+    public const float ObjectCellReach = ObjectGridSize - (2f * PhysicsConstants.NearMargin);
 
     /// <summary>
-    /// Whether an outdoor object may be listed on a square of the fine grid within <paramref name="reach"/>
-    /// (metres, per axis) of <paramref name="local"/> (landblock-local): false is certain.
+    /// Bounds seen from above (landblock-local metres) of everything here that outdoor movers meet: the outdoor
+    /// objects (with their floors) and the walls of the cells <see cref="MetOutdoors"/>. Empty (min &gt; max) when
+    /// there is nothing; never more than <see cref="PhysicsConstants.MaxSeamReach"/> past the landblock's edges.
+    /// A mover in a neighbouring landblock looks here only when its box meets these bounds.
+    /// </summary>
+    public Vector2 OutdoorMin { get; }
+
+    /// <inheritdoc cref="OutdoorMin"/>
+    public Vector2 OutdoorMax { get; }
+
+    /// <summary>
+    /// Whether an outdoor object of this landblock may be listed on a square of the fine grid within
+    /// <paramref name="reach"/> (metres, per axis) of <paramref name="local"/> (landblock-local): false is certain.
     /// </summary>
     public bool ObjectsMayBeWithin(Vector2 local, float reach) =>
         reach < ObjectCellReach ? (ObjectCells & (1UL << (int)(CellIds.OutdoorCellNumberUnchecked(local.X, local.Y) - 1))) != 0 : OutdoorObjects.Length > 0;
 
-    /// <summary>The fine grid's column (or row) of a landblock-local coordinate, clamped to the landblock.</summary>
-    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-    public static int ObjectGridColumn(float coordinate) =>
-        Math.Min((int)(Math.Clamp(coordinate, 0f, PhysicsConstants.LandblockSize) * (1f / ObjectGridSize)), ObjectGridSide - 1);
-
-    /// <summary>The outdoor objects over fine-grid square (<paramref name="column"/>, <paramref name="row"/>).</summary>
-    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-    public ReadOnlySpan<int> ObjectsAt(int column, int row)
-    {
-        int k = (column * ObjectGridSide) + row;
-        int start = ObjectGridStarts[k];
-        return ObjectGridItems.AsSpan(start, ObjectGridStarts[k + 1] - start);
-    }
+    /// <summary>Whether the box <paramref name="lo"/>–<paramref name="hi"/> (this landblock's frame) meets <see cref="OutdoorMin"/>–<see cref="OutdoorMax"/>.</summary>
+    public bool OutdoorsOverlaps(Vector2 lo, Vector2 hi) =>
+        OutdoorMin.X <= hi.X && OutdoorMax.X >= lo.X && OutdoorMin.Y <= hi.Y && OutdoorMax.Y >= lo.Y;
 
     public bool TryGetCellIndex(uint cellId, out int index) => _indexById.TryGetValue(cellId, out index);
 
-    /// <summary>The fine grid of <see cref="ObjectGridStarts"/>: each object over the squares its bounds and its floors' bounds (grown by the edge tolerance) cover.</summary>
-    private static (int[] Starts, int[] Items) BuildObjectGrid(ObjectSurface[] objects)
+    /// <summary><see cref="ObjectCells"/> of the outdoor objects' fine grid.</summary>
+    private static ulong ObjectCellMask(BoxGrid grid)
     {
-        if (objects.Length == 0)
-        {
-            return ([], []);
-        }
-
-        const int n = ObjectGridSide;
-        var starts = new int[(n * n) + 1];
-        var boxes = new (int X0, int X1, int Y0, int Y1)[objects.Length];
-        for (int i = 0; i < objects.Length; i++)
-        {
-            ObjectSurface o = objects[i];
-            Vector2 min = new(o.BoundsMin.X, o.BoundsMin.Y), max = new(o.BoundsMax.X, o.BoundsMax.Y);
-            if (o.FloorMin.X <= o.FloorMax.X)
-            {
-                (min, max) = (Vector2.Min(min, o.FloorMin), Vector2.Max(max, o.FloorMax));
-            }
-
-            min -= new Vector2(PhysicsConstants.EdgeTolerance);
-            max += new Vector2(PhysicsConstants.EdgeTolerance);
-            boxes[i] = (ObjectGridColumn(min.X), ObjectGridColumn(max.X), ObjectGridColumn(min.Y), ObjectGridColumn(max.Y));
-            for (int cx = boxes[i].X0; cx <= boxes[i].X1; cx++)
-            {
-                for (int cy = boxes[i].Y0; cy <= boxes[i].Y1; cy++)
-                {
-                    starts[(cx * n) + cy + 1]++;
-                }
-            }
-        }
-
-        for (int k = 0; k < n * n; k++)
-        {
-            starts[k + 1] += starts[k];
-        }
-
-        var items = new int[starts[n * n]];
-        var next = starts[..(n * n)];
-        for (int i = 0; i < objects.Length; i++)
-        {
-            for (int cx = boxes[i].X0; cx <= boxes[i].X1; cx++)
-            {
-                for (int cy = boxes[i].Y0; cy <= boxes[i].Y1; cy++)
-                {
-                    items[next[(cx * n) + cy]++] = i;
-                }
-            }
-        }
-
-        return (starts, items);
-    }
-
-    /// <summary><see cref="ObjectCells"/> of a fine grid (<see cref="ObjectGridStarts"/>; empty: no objects).</summary>
-    private static ulong ObjectCellMask(int[] starts)
-    {
-        if (starts.Length == 0)
-        {
-            return 0;
-        }
-
         const int perCell = ObjectGridSide / PhysicsConstants.CellsPerSide;
         ulong mask = 0;
         for (int cx = 0; cx < PhysicsConstants.CellsPerSide; cx++)
@@ -224,9 +180,12 @@ internal sealed class LandblockEntry
                 int y0 = Math.Max((cy * perCell) - 1, 0), y1 = Math.Min(((cy + 1) * perCell) + 1, ObjectGridSide);
                 for (int x = x0; x < x1; x++)
                 {
-                    if (starts[(x * ObjectGridSide) + y0] != starts[(x * ObjectGridSide) + y1])
+                    for (int y = y0; y < y1; y++)
                     {
-                        mask |= 1UL << ((cx * PhysicsConstants.CellsPerSide) + cy);
+                        if (grid.Lists(x, y))
+                        {
+                            mask |= 1UL << ((cx * PhysicsConstants.CellsPerSide) + cy);
+                        }
                     }
                 }
             }
@@ -235,18 +194,62 @@ internal sealed class LandblockEntry
         return mask;
     }
 
-    /// <summary>Per outdoor cell, the items whose bounds (from <paramref name="bounds"/>; null: none) overlap it.</summary>
-    private static int[][] BuildBuckets(CellSurface[] cells, Func<CellSurface, (Vector2 Min, Vector2 Max)?> bounds)
+    /// <summary><see cref="MetOutdoors"/>: every cell joined through portals (either way) to one with a portal to the outdoors.</summary>
+    private static bool[] Buildings(int[][] portalTargets)
+    {
+        int n = portalTargets.Length;
+        var parent = new int[n + 1]; // n: the outdoors
+        for (int i = 0; i <= n; i++)
+        {
+            parent[i] = i;
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            foreach (int target in portalTargets[i])
+            {
+                int other = target >= 0 ? target : target == OutdoorTarget ? n : -1;
+                if (other >= 0)
+                {
+                    parent[Root(parent, i)] = Root(parent, other);
+                }
+            }
+        }
+
+        var met = new bool[n];
+        int outdoors = Root(parent, n);
+        for (int i = 0; i < n; i++)
+        {
+            met[i] = Root(parent, i) == outdoors;
+        }
+
+        return met;
+
+        static int Root(int[] parent, int i)
+        {
+            while (parent[i] != i)
+            {
+                parent[i] = parent[parent[i]]; // path halving
+                i = parent[i];
+            }
+
+            return i;
+        }
+    }
+
+    /// <summary>Per outdoor cell, the cells whose floor bounds overlap it.</summary>
+    private static int[][] BuildBuckets(CellSurface[] cells)
     {
         const int n = PhysicsConstants.CellsPerSide;
         var lists = new List<int>?[n * n];
         for (int i = 0; i < cells.Length; i++)
         {
-            if (bounds(cells[i]) is not (Vector2 min, Vector2 max))
+            if (!cells[i].HasFloor)
             {
                 continue;
             }
 
+            (Vector2 min, Vector2 max) = (cells[i].FloorMin, cells[i].FloorMax);
             int cx0 = CellIds.OutdoorColumn(min.X), cx1 = CellIds.OutdoorColumn(max.X);
             int cy0 = CellIds.OutdoorColumn(min.Y), cy1 = CellIds.OutdoorColumn(max.Y);
             for (int cx = cx0; cx <= cx1; cx++)
@@ -275,6 +278,18 @@ internal sealed class LandblockEntry
 /// </summary>
 internal readonly struct ObjectBox(ObjectSurface o)
 {
+    /// <summary>The box an object is listed by in the fine grid: its bounds and its floors' bounds, grown by the edge tolerance.</summary>
+    public static (Vector2 Min, Vector2 Max) GridBounds(ObjectSurface o)
+    {
+        Vector2 min = new(o.BoundsMin.X, o.BoundsMin.Y), max = new(o.BoundsMax.X, o.BoundsMax.Y);
+        if (o.FloorMin.X <= o.FloorMax.X)
+        {
+            (min, max) = (Vector2.Min(min, o.FloorMin), Vector2.Max(max, o.FloorMax));
+        }
+
+        return (min - new Vector2(PhysicsConstants.EdgeTolerance), max + new Vector2(PhysicsConstants.EdgeTolerance));
+    }
+
     public readonly Vector2 WallMin = o.Walls.Min;
     public readonly Vector2 WallMax = o.Walls.Max;
     public readonly float ZMin = o.BoundsMin.Z;

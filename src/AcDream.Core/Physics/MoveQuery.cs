@@ -6,11 +6,15 @@ namespace AcDream.Core.Physics;
 
 /// <summary>
 /// One move's state, as one value through the resolvers: what the caller asked (position, cell,
-/// horizontal delta, step height, effects), the move in its landblock's frame once located, and how
-/// many cell visits its portal search has left. Passed by reference; nothing here allocates.
+/// horizontal delta, step height, effects), the landblocks the call reads (<see cref="Lands"/>, shared by
+/// every move of one call), the move in its landblock's frame once located, and how many cell visits its
+/// portal search has left. Passed by reference; nothing here allocates.
 /// </summary>
 internal ref struct MoveQuery
 {
+    /// <summary>The landblocks this call reads, each once (shared by every sub-move of the call).</summary>
+    public ref Neighbourhood Lands;
+
     /// <summary>The mover's feet, world metres.</summary>
     public readonly Vector3 Position;
 
@@ -47,8 +51,9 @@ internal ref struct MoveQuery
     /// <summary>Cell visits the portal search may still make (<see cref="PhysicsConstants.MaxCellVisits"/> per call).</summary>
     public int CellVisitsLeft;
 
-    public MoveQuery(Vector3 position, uint cellId, Vector2 delta, float stepUp, ref readonly MovementOptions options)
+    public MoveQuery(ref Neighbourhood lands, Vector3 position, uint cellId, Vector2 delta, float stepUp, ref readonly MovementOptions options)
     {
+        Lands = ref lands;
         Position = position;
         CellId = cellId;
         Delta = delta;
@@ -65,6 +70,9 @@ internal ref struct MoveQuery
 
     /// <summary>The feet's Z, metres.</summary>
     public readonly float Z => Position.Z;
+
+    /// <summary>A new move of the same call (its landblocks, step and effects) from <paramref name="position"/> in <paramref name="cellId"/> by <paramref name="delta"/>.</summary>
+    public readonly MoveQuery Next(Vector3 position, uint cellId, Vector2 delta) => new(ref Lands, position, cellId, delta, StepUp, in Options);
 
     /// <summary>Checks the arguments of a Resolve call; the exceptions name the spec's parameters.</summary>
     /// <remarks>
@@ -118,21 +126,18 @@ internal ref struct MoveQuery
             $"currentCellId 0x{cellId:X8} names a landblock off the world: X and Y must be within 0x00..0x{PhysicsConstants.MaxLandblockIndex:X2}.", "currentCellId");
     }
 
-    /// <summary>
-    /// Landblock (x, y): the entry this call already read when it is one of those, else the
-    /// registry's. A call reads each landblock's slot once, so it sees each landblock whole even
-    /// while a writer replaces it.
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public readonly LandblockEntry? Landblock(LandblockRegistry registry, int x, int y) =>
-        Entry is { } entry && entry.X == x && entry.Y == y ? entry
-        : Here is { } here && here.X == x && here.Y == y ? here
-        : registry.Get(x, y);
 }
 
 /// <summary>How a move's answer is formed once its ground is known; shared by both resolvers.</summary>
 internal static class Answers
 {
+    /// <summary>
+    /// A move made of parts (sub-steps, legs): after the accepted <paramref name="last"/>, the next part's
+    /// answer; when that part is refused, the last accepted position with the refusal's outcome and normal.
+    /// </summary>
+    public static ResolveResult Continue(ResolveResult last, ResolveResult next) =>
+        next.IsRefused ? last with { Outcome = next.Outcome, SurfaceNormal = next.SurfaceNormal } : next;
+
     /// <summary>
     /// The result of arriving over ground at <paramref name="ground"/>: on it, or, with step down on
     /// and the ground farther below the feet than the step-down height (and the ground tolerance),

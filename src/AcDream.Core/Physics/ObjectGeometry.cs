@@ -29,57 +29,6 @@ internal static class ObjectGeometry
     }
 
     /// <summary>
-    /// <see cref="Raise(ReadOnlySpan{ObjectSurface}, float, float, float, bool, ref float, out int)"/> over
-    /// the outdoor objects a landblock lists over the square of its fine grid (<see cref="LandblockEntry.ObjectsAt"/>) under (x, y).
-    /// </summary>
-    public static bool RaiseOutdoors(LandblockEntry entry, float x, float y, float ceilingZ, bool found, ref float z, out int objectIndex)
-    {
-        objectIndex = -1;
-        if (entry.OutdoorObjects.Length == 0)
-        {
-            return false; // no grid
-        }
-
-        ObjectSurface[] objects = entry.OutdoorObjects;
-        foreach (int i in entry.ObjectsAt(LandblockEntry.ObjectGridColumn(x), LandblockEntry.ObjectGridColumn(y)))
-        {
-            if (objects[i].TryFloorBelow(x, y, ceilingZ, out float floor) && (!found || floor > z))
-            {
-                (z, found, objectIndex) = (floor, true, i);
-            }
-        }
-
-        return objectIndex >= 0;
-    }
-
-    /// <summary>
-    /// Whether any outdoor object of <paramref name="entry"/> is listed over the fine-grid squares of the
-    /// box of <paramref name="p0"/> → <paramref name="p1"/> grown by <see cref="NearMargin"/> (so rounding
-    /// the move into its landblock's frame never leaves a square out). False means every object question
-    /// about the move has no answer: no floor under its ends, no wall it crosses.
-    /// </summary>
-    public static bool AnyOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1)
-    {
-        Vector2 lo = Vector2.Min(p0, p1) - new Vector2(NearMargin), hi = Vector2.Max(p0, p1) + new Vector2(NearMargin);
-        int x0 = LandblockEntry.ObjectGridColumn(lo.X), x1 = LandblockEntry.ObjectGridColumn(hi.X);
-        int y0 = LandblockEntry.ObjectGridColumn(lo.Y), y1 = LandblockEntry.ObjectGridColumn(hi.Y);
-        int[] starts = entry.ObjectGridStarts;
-        for (int cx = x0; cx <= x1; cx++)
-        {
-            int k = (cx * LandblockEntry.ObjectGridSide) + y0;
-            if (starts[k] != starts[k + (y1 - y0) + 1])
-            {
-                return true; // squares k .. k + (y1 − y0) of this column list at least one object
-            }
-        }
-
-        return false;
-    }
-
-    /// <summary>Margin of <see cref="AnyOutdoors"/>, metres.</summary>
-    public const float NearMargin = 0.01f;
-
-    /// <summary>
     /// The first wall of <paramref name="objects"/> that the move <paramref name="p0"/> → <paramref name="p1"/>
     /// crosses at height <paramref name="h"/> (a point mover's feet plus its step: lower walls are steps),
     /// from either side: fraction <paramref name="t"/> along the move (only crossings before the
@@ -99,50 +48,76 @@ internal static class ObjectGeometry
     }
 
     /// <summary>
-    /// The outdoor objects of <paramref name="entry"/> a move meets, in one pass over those listed on the
-    /// squares of its fine grid the move's box covers (<see cref="LandblockEntry.ObjectsAt"/>; an object over
-    /// several of them is tested again, with the same answer): the first wall the move
-    /// <paramref name="p0"/> → <paramref name="p1"/> crosses at height <paramref name="h"/>, as
-    /// <see cref="FirstCrossing(ReadOnlySpan{ObjectSurface}, Vector2, Vector2, float, ref float, ref Vector3, ref int)"/>
-    /// (<paramref name="wall"/>: the object); and, when <paramref name="floors"/>, <paramref name="groundZ"/>
-    /// raised to the highest object floor under <paramref name="p1"/> no higher than <paramref name="h"/>
-    /// (<paramref name="floor"/>: the object; the end point's square is among those of the box). The
-    /// objects' boxes (<see cref="LandblockEntry.ObjectBoxes"/>) reject them first, so only an object in
-    /// reach is read.
+    /// The objects standing outdoors in <paramref name="entry"/>'s landblock and in a neighbour whose objects
+    /// reach over the seam that a point move meets, in one pass over those listed on the squares of each
+    /// landblock's fine grid the move's box covers: the first wall the move <paramref name="p0"/> →
+    /// <paramref name="p1"/> (landblock-local to <paramref name="entry"/>) crosses at height <paramref name="h"/>,
+    /// as <see cref="FirstCrossing(ReadOnlySpan{ObjectSurface}, Vector2, Vector2, float, ref float, ref Vector3, ref int)"/>;
+    /// and, when <paramref name="floors"/>, the ground raised to the highest object floor under
+    /// <paramref name="p1"/> no higher than <paramref name="h"/>. Into <paramref name="hit"/>.
     /// </summary>
-    public static void AmongOutdoors(
-        LandblockEntry entry, Vector2 p0, Vector2 p1, float h, ref float t, ref Vector3 normal, ref int wall, bool floors, ref float groundZ, ref int floor)
+    public static void AmongOutdoors(ref Neighbourhood lands, LandblockEntry entry, Vector2 p0, Vector2 p1, float h, bool floors, ref ObjectHit hit)
+    {
+        AmongOutdoors(entry, p0, p1, h, floors, ref hit);
+        SeamNeighbours across = Neighbourhood.Across(ref lands, entry, Vector2.Min(p0, p1), Vector2.Max(p0, p1));
+        while (across.MoveNext())
+        {
+            AmongOutdoors(across.Current, p0 - across.Offset, p1 - across.Offset, h, floors, ref hit);
+        }
+    }
+
+    /// <summary>
+    /// As <see cref="AmongOutdoors(ref Neighbourhood, LandblockEntry, Vector2, Vector2, float, bool, ref ObjectHit)"/>,
+    /// the objects of one landblock (the move in its frame). The objects' boxes (<see cref="LandblockEntry.ObjectBoxes"/>)
+    /// reject them first, so only an object in reach is read.
+    /// </summary>
+    public static void AmongOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1, float h, bool floors, ref ObjectHit hit)
     {
         if (entry.OutdoorObjects.Length == 0)
         {
-            return; // no grid
+            return;
         }
 
-        Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
-        int x0 = LandblockEntry.ObjectGridColumn(lo.X), x1 = LandblockEntry.ObjectGridColumn(hi.X);
-        int y0 = LandblockEntry.ObjectGridColumn(lo.Y), y1 = LandblockEntry.ObjectGridColumn(hi.Y);
-        ObjectSurface[] objects = entry.OutdoorObjects;
-        ObjectBox[] boxes = entry.ObjectBoxes;
-        for (int cx = x0; cx <= x1; cx++)
-        {
-            for (int cy = y0; cy <= y1; cy++)
-            {
-                foreach (int i in entry.ObjectsAt(cx, cy))
-                {
-                    ref readonly ObjectBox b = ref boxes[i];
-                    if (b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y && b.ZMin < h && b.ZMax > h
-                        && FirstCrossing(objects[i].Walls, p0, p1, lo, hi, h, ref t, ref normal))
-                    {
-                        wall = i;
-                    }
+        var visit = new PointVisit(entry, p0, p1, h, floors, ref hit);
+        entry.Objects.Query(Vector2.Min(p0, p1), Vector2.Max(p0, p1), ref visit);
+    }
 
-                    if (floors && p1.X >= b.FloorMin.X && p1.Y >= b.FloorMin.Y && p1.X <= b.FloorMax.X && p1.Y <= b.FloorMax.Y
-                        && objects[i].TryFloorBelow(p1.X, p1.Y, h, out float z) && z > groundZ)
-                    {
-                        (groundZ, floor) = (z, i);
-                    }
-                }
+    /// <summary>
+    /// <paramref name="groundZ"/> raised to the highest floor under <paramref name="p"/> (landblock-local to
+    /// <paramref name="entry"/>) of an outdoor object of its landblock or of a neighbour's reaching over the
+    /// seam, no higher than <paramref name="ceilingZ"/>, when above it; <paramref name="floor"/>: whose floor
+    /// (null when not raised).
+    /// </summary>
+    public static float RaiseOutdoors(ref Neighbourhood lands, LandblockEntry entry, Vector2 p, float ceilingZ, float groundZ, out ObjectSurface? floor)
+    {
+        var hit = ObjectHit.Over(groundZ);
+        AmongOutdoors(ref lands, entry, p, p, ceilingZ, floors: true, ref hit);
+        floor = hit.Floor;
+        return hit.GroundZ;
+    }
+
+    /// <summary>One object listed over a point move's squares: the wall it crosses first, the floor under its end.</summary>
+    private ref struct PointVisit(LandblockEntry entry, Vector2 p0, Vector2 p1, float h, bool floors, ref ObjectHit hit) : IBoxVisitor
+    {
+        private readonly Vector2 _lo = Vector2.Min(p0, p1), _hi = Vector2.Max(p0, p1);
+        private ref ObjectHit _hit = ref hit;
+
+        public bool Visit(int i)
+        {
+            ref readonly ObjectBox b = ref entry.ObjectBoxes[i];
+            if (b.WallMin.X <= _hi.X && b.WallMax.X >= _lo.X && b.WallMin.Y <= _hi.Y && b.WallMax.Y >= _lo.Y && b.ZMin < h && b.ZMax > h
+                && FirstCrossing(entry.OutdoorObjects[i].Walls, p0, p1, _lo, _hi, h, ref _hit.T, ref _hit.Normal))
+            {
+                _hit.Wall = entry.OutdoorObjects[i];
             }
+
+            if (floors && p1.X >= b.FloorMin.X && p1.Y >= b.FloorMin.Y && p1.X <= b.FloorMax.X && p1.Y <= b.FloorMax.Y
+                && entry.OutdoorObjects[i].TryFloorBelow(p1.X, p1.Y, h, out float z) && z > _hit.GroundZ)
+            {
+                (_hit.GroundZ, _hit.Floor) = (z, entry.OutdoorObjects[i]);
+            }
+
+            return true;
         }
     }
 
@@ -263,4 +238,22 @@ internal static class ObjectGeometry
     }
 
     private static float Cross(Vector2 u, Vector2 v) => (u.X * v.Y) - (u.Y * v.X);
+}
+
+/// <summary>
+/// What a point move meets among objects: the first object wall its segment crosses (<see cref="T"/>, the
+/// fraction of the move, above 1 for none; <see cref="Normal"/>, facing the mover; <see cref="Wall"/>), and
+/// the ground under its end raised to the highest object floor within reach (<see cref="GroundZ"/>,
+/// <see cref="Floor"/>: null when no object's floor raised it).
+/// </summary>
+internal struct ObjectHit
+{
+    public float T;
+    public Vector3 Normal;
+    public ObjectSurface? Wall;
+    public float GroundZ;
+    public ObjectSurface? Floor;
+
+    /// <summary>Nothing met yet, over ground at <paramref name="groundZ"/>.</summary>
+    public static ObjectHit Over(float groundZ) => new() { T = 2f, GroundZ = groundZ };
 }

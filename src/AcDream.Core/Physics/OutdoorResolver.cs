@@ -8,7 +8,7 @@ namespace AcDream.Core.Physics;
 /// landblock across a seam, enters a building's cell whose floor is at the ground there (through a
 /// door only, with doors only), else walks the terrain with the step and slope checks.
 /// </summary>
-internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame frame, PortalTraversal portals)
+internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
 {
     /// <summary>Resolves one move.</summary>
     /// <remarks>
@@ -24,7 +24,7 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         Vector3 position = q.Position;
         Vector2 delta = q.Delta;
         frame.Locate(position, q.CellId, out int lbX, out int lbY, out Vector2 local);
-        LandblockEntry? here = registry.Get(lbX, lbY);
+        LandblockEntry? here = q.Lands.Get(lbX, lbY);
         uint hereCellId = WorldFrame.OutdoorCellId(lbX, lbY, local);
         if (here is null)
         {
@@ -38,17 +38,20 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         candidate = frame.Representable(toX, toY, candidate);
         WorldFrame.Wrap(ref candidate.X, ref toX); // rounding can put it on the far seam
         WorldFrame.Wrap(ref candidate.Y, ref toY);
-        LandblockEntry? there = toX == lbX && toY == lbY ? here : registry.Get(toX, toY); // one read of each slot per call
+        LandblockEntry? there = toX == lbX && toY == lbY ? here : q.Lands.Get(toX, toY);
         float groundHere = here.Terrain.SampleZUnchecked(local.X, local.Y); // the terrain; objects on the rare paths (GroundHere)
 
         // Objects are looked at only when the bit of the mover's cell is set (an object is listed on a
         // fine-grid square of the cell or within one square of it), or a move reaching ObjectCellReach
-        // or more along an axis has one listed over the squares of its box, or the move crosses into
-        // another landblock with objects: a move away from every object takes the path of a landblock
-        // without objects, with the same answer.
+        // or more along an axis has one listed over the squares of its box, or the move comes within a
+        // neighbour's reach of a seam (MaxSeamReach) and that neighbour's objects or buildings reach its
+        // box, or it crosses into another landblock: a move away from every object takes the path of a
+        // landblock without objects, with the same answer.
         bool objectsNear = (here.ObjectCells & (1UL << (int)((hereCellId & 0xFFFF) - 1))) != 0
             || (!(MathF.Abs(delta.X) < LandblockEntry.ObjectCellReach && MathF.Abs(delta.Y) < LandblockEntry.ObjectCellReach)
-                && here.OutdoorObjects.Length > 0 && ObjectGeometry.AnyOutdoors(here, local, local + delta));
+                && here.OutdoorObjects.Length > 0 && here.Objects.ListsAny(
+                    Vector2.Min(local, local + delta) - new Vector2(PhysicsConstants.NearMargin),
+                    Vector2.Max(local, local + delta) + new Vector2(PhysicsConstants.NearMargin)));
         q.Stand = new Standing(lbX, lbY, local, groundHere, hereCellId);
         q.Here = here;
         if (there is null)
@@ -61,7 +64,7 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
         q.P1 = candidate;
         float groundZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
         bool onObject = false;
-        if (objectsNear || (there != here && (there.OutdoorObjects.Length > 0 || here.OutdoorObjects.Length > 0)))
+        if (objectsNear || there != here || (NearSeam(local, delta) && AnyNeighbourNear(ref q.Lands, here, local, delta)))
         {
             // Among objects: refused at the first object wall the move crosses at the feet plus the step
             // (a shell's is the building's outer wall); else it ends on the highest floor under the end
@@ -77,29 +80,51 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
             : WalkTerrain(ref q, groundZ, onObject);
     }
 
+    /// <summary>Whether the move's box (from <paramref name="local"/> by <paramref name="delta"/>) comes within <see cref="PhysicsConstants.MaxSeamReach"/> of a seam of its landblock.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool NearSeam(Vector2 local, Vector2 delta)
+    {
+        const float reach = PhysicsConstants.MaxSeamReach, far = PhysicsConstants.LandblockSize - PhysicsConstants.MaxSeamReach;
+        Vector2 end = local + delta;
+        return !(MathF.Min(local.X, end.X) >= reach && MathF.Min(local.Y, end.Y) >= reach && MathF.Max(local.X, end.X) <= far && MathF.Max(local.Y, end.Y) <= far);
+    }
+
+    /// <summary>Whether a neighbour's objects or buildings reach the box of the move from <paramref name="local"/> by <paramref name="delta"/> (near a seam).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // out of Resolve: only near a seam
+    private static bool AnyNeighbourNear(ref Neighbourhood lands, LandblockEntry here, Vector2 local, Vector2 delta)
+    {
+        SeamNeighbours across = Neighbourhood.Across(ref lands, here, Vector2.Min(local, local + delta), Vector2.Max(local, local + delta));
+        while (across.MoveNext())
+        {
+            if (across.Current.OutdoorObjects.Length > 0)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
     /// <summary>
-    /// The objects' answer for a move among them: whether it crosses an object's wall (of the landblock
-    /// it ends in, or of its own across a seam) at the feet plus the step, <paramref name="h"/> (the
-    /// outcome: a shell's is the building's outer wall; and the wall's normal); else
-    /// <paramref name="groundZ"/> raised to the highest object floor under the end point no higher
+    /// The objects' answer for a move among them (of the landblock it ends in and its neighbours, and of the
+    /// one it starts in across a seam): whether it crosses an object's wall at the feet plus the step,
+    /// <paramref name="h"/> (the outcome: a shell's is the building's outer wall; and the wall's normal);
+    /// else <paramref name="groundZ"/> raised to the highest object floor under the end point no higher
     /// than <paramref name="h"/>, and whether it was.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a move away from objects pays nothing for it
     private static bool AmongObjects(ref MoveQuery q, float h, ref float groundZ, out bool onObject, out ResolveOutcome why, out Vector3 normal)
     {
-        float t = 2f;
-        normal = default;
-        int there = -1, here = -1, floor = -1;
-        ObjectGeometry.AmongOutdoors(q.Entry, q.P0, q.P1, h, ref t, ref normal, ref there, true, ref groundZ, ref floor);
+        var hit = ObjectHit.Over(groundZ);
+        ObjectGeometry.AmongOutdoors(ref q.Lands, q.Entry, q.P0, q.P1, h, floors: true, ref hit);
         if (q.Here != q.Entry)
         {
-            ObjectGeometry.AmongOutdoors(q.Here!, q.Stand.Local, q.Stand.Local + q.Delta, h, ref t, ref normal, ref here, false, ref groundZ, ref floor);
+            ObjectGeometry.AmongOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Stand.Local + q.Delta, h, floors: false, ref hit);
         }
 
-        ObjectSurface? wall = here >= 0 ? q.Here!.OutdoorObjects[here] : there >= 0 ? q.Entry.OutdoorObjects[there] : null;
-        why = wall is { IsBuilding: true } ? ResolveOutcome.OuterWall : ResolveOutcome.Wall;
-        onObject = floor >= 0;
-        return wall is not null;
+        (groundZ, normal, onObject) = (hit.GroundZ, hit.Normal, hit.Floor is not null);
+        why = hit.Wall is { IsBuilding: true } ? ResolveOutcome.OuterWall : ResolveOutcome.Wall;
+        return hit.Wall is not null;
     }
 
     /// <summary>The move ends over cell <paramref name="cellIndex"/>'s floor at the ground there: entered, unless its edge is a step too high or (doors only) no door leads in.</summary>
@@ -153,16 +178,8 @@ internal sealed class OutdoorResolver(LandblockRegistry registry, WorldFrame fra
     /// an object's floor above it no more than a step above the feet. Asked only on the rare paths (a
     /// rise beyond the step, a refusal), so a move among objects does not pay for it.
     /// </summary>
-    private static float GroundHere(ref MoveQuery q)
-    {
-        float ground = q.Stand.GroundZ;
-        if (q.Here!.OutdoorObjects.Length > 0)
-        {
-            ObjectGeometry.RaiseOutdoors(q.Here, q.Stand.Local.X, q.Stand.Local.Y, q.Z + q.StepUp, true, ref ground, out _);
-        }
-
-        return ground;
-    }
+    private static float GroundHere(ref MoveQuery q) =>
+        ObjectGeometry.RaiseOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Z + q.StepUp, q.Stand.GroundZ, out _);
 
     /// <summary>
     /// Outdoor entry: the floor, among the cells over the candidate's outdoor cell, nearest the

@@ -151,14 +151,6 @@ public static class PhysicsConstants
     /// <summary>Body: the most walls one call slides along (the contacts of collide-and-slide).</summary>
     public const int MaxBodyContacts = 4;
 
-    /// <summary>
-    /// Body: the most cells whose walls one call gathers (held on the stack, 4 bytes each). Beyond it
-    /// the cells found last (the farthest portal neighbours; outdoors, the last buckets scanned) are
-    /// not gathered, so their walls would not stop the body. The whole Holtburg cottage is 16 cells;
-    /// the margin is for dense towns and long moves.
-    /// </summary>
-    public const int MaxBodyCells = 128;
-
     /// <summary>Body: the smallest gap, metres, the body keeps from walls beyond its radius (the world frame's rounding is added to it).</summary>
     public const float BodySkin = 0.00001f;
 
@@ -170,8 +162,23 @@ public static class PhysicsConstants
 
     /// <summary>
     /// Most outdoor objects one landblock may register (its <c>LandBlockInfo</c>'s objects and
-    /// buildings): with those of its eight neighbours reaching over it, they stay below the body's
-    /// 65,536 object slots per landblock.
+    /// buildings). A bound on the memory and build time of one registration, far above real data.
     /// </summary>
     public const int MaxOutdoorObjects = 7_000;
+
+    /// <summary>
+    /// How far, metres, anything an outdoor mover meets may reach past the edge of the landblock that
+    /// registers it (an outdoor object, with its floors; the walls of a building's cells): 24 m, one outdoor
+    /// cell. A mover looks at a neighbouring landblock's objects and walls only when its move comes this
+    /// close to their seam, so one far from every seam reads its own landblock alone. Registering more is an
+    /// <see cref="ArgumentException"/> naming the object or cell. Holtburg's cellar reaches 1 m past its seam.
+    /// </summary>
+    /// <value>24 m.</value>
+    public const float MaxSeamReach = 24f;
+
+    /// <summary>
+    /// Margin, metres, by which a move's box is grown before the objects' fine grid is asked about it, so
+    /// rounding the move into a landblock's frame never leaves a square out: 1 cm.
+    /// </summary>
+    internal const float NearMargin = 0.01f;
 }

@@ -62,9 +62,9 @@ public sealed class PhysicsEngine
     private PhysicsEngine(WorldFrame frame)
     {
         _frame = frame;
-        var portals = new PortalTraversal(_registry);
-        _point = new PointMover(new OutdoorResolver(_registry, frame, portals), new IndoorResolver(_registry, frame, portals));
-        _planner = new BodyPlanner(_registry, frame);
+        var portals = new PortalTraversal();
+        _point = new PointMover(new OutdoorResolver(frame, portals), new IndoorResolver(frame, portals));
+        _planner = new BodyPlanner(frame);
         _body = new BodyResolver(_planner, frame, _point);
     }
 
@@ -143,36 +143,37 @@ public sealed class PhysicsEngine
 
         (groundZ, normal, objectId) = (0f, default, 0u);
         float ceiling = worldPosition.Z + stepUpHeight;
-        int hit;
-        ReadOnlySpan<ObjectSurface> objects;
-        if (LocateQuery(worldPosition, cellId, out Vector2 p, out int index) is not LandblockEntry entry)
+        var lands = new Neighbourhood(_registry);
+        if (LocateQuery(ref lands, worldPosition, cellId, out Vector2 p, out int index) is not LandblockEntry entry)
         {
             return false;
         }
 
+        ObjectSurface? floor;
         if (index >= 0)
         {
             CellSurface cell = entry.Cells[index];
             bool found = cell.TrySampleFloor(p.X, p.Y, worldPosition.Z, out groundZ, out normal);
-            objects = cell.Objects;
-            if (!ObjectGeometry.Raise(objects, p.X, p.Y, ceiling, found, ref groundZ, out hit))
+            if (!ObjectGeometry.Raise(cell.Objects, p.X, p.Y, ceiling, found, ref groundZ, out int hit))
             {
                 return found;
             }
+
+            floor = cell.Objects[hit];
         }
         else
         {
             groundZ = entry.Terrain.SampleZUnchecked(p.X, p.Y);
             normal = entry.Terrain.NormalUnchecked(p.X, p.Y);
-            objects = entry.OutdoorObjects;
-            if (objects.Length == 0 || !ObjectGeometry.RaiseOutdoors(entry, p.X, p.Y, ceiling, true, ref groundZ, out hit))
+            groundZ = ObjectGeometry.RaiseOutdoors(ref lands, entry, p, ceiling, groundZ, out floor);
+            if (floor is null)
             {
                 return true;
             }
         }
 
-        objectId = objects[hit].ObjectId;
-        normal = objects[hit].FloorNormal(p.X, p.Y, groundZ);
+        objectId = floor.ObjectId;
+        normal = floor.FloorNormal(p.X, p.Y, groundZ);
         return true;
     }
 
@@ -199,7 +200,8 @@ public sealed class PhysicsEngine
             throw new ArgumentException($"reach {reach} must be finite and ≥ 0.", nameof(reach));
         }
 
-        if (LocateQuery(worldPosition, cellId, out Vector2 p, out int index) is not LandblockEntry entry)
+        var lands = new Neighbourhood(_registry);
+        if (LocateQuery(ref lands, worldPosition, cellId, out Vector2 p, out int index) is not LandblockEntry entry)
         {
             return 0;
         }
@@ -233,14 +235,14 @@ public sealed class PhysicsEngine
     /// is unknown), the landblock-local point as <c>Resolve</c> forms it, and the indoor cell's index
     /// (−1 outdoors).
     /// </summary>
-    private LandblockEntry? LocateQuery(Vector3 worldPosition, uint cellId, out Vector2 local, out int cellIndex)
+    private LandblockEntry? LocateQuery(ref Neighbourhood lands, Vector3 worldPosition, uint cellId, out Vector2 local, out int cellIndex)
     {
         cellIndex = -1;
         if (CellIds.IsIndoor(cellId))
         {
             int x = CellIds.LandblockX(cellId), y = CellIds.LandblockY(cellId);
             local = default;
-            if (_registry.Get(x, y) is not LandblockEntry entry || !entry.TryGetCellIndex(cellId, out cellIndex))
+            if (lands.Get(x, y) is not LandblockEntry entry || !entry.TryGetCellIndex(cellId, out cellIndex))
             {
                 cellIndex = -1;
                 return null;
@@ -251,7 +253,7 @@ public sealed class PhysicsEngine
         }
 
         _frame.Locate(worldPosition, cellId, out int lbX, out int lbY, out local);
-        return _registry.Get(lbX, lbY);
+        return lands.Get(lbX, lbY);
     }
 
     /// <summary>
@@ -331,65 +333,44 @@ public sealed class PhysicsEngine
         }
 
         ObjectSurface[] outdoor = objects.Count == 0 ? [] : PlaceObjects(prefix, sorted, objects);
-        int x = CellIds.LandblockX(landblockId), y = CellIds.LandblockY(landblockId);
-        ObjectSurface[] reaching = ReachingOver(x, y);
-        _registry.Set(new LandblockEntry(x, y, terrain, sorted, [.. outdoor, .. reaching], outdoor.Length));
-        RefreshNeighbours(x, y);
+        var entry = new LandblockEntry(CellIds.LandblockX(landblockId), CellIds.LandblockY(landblockId), terrain, sorted, outdoor);
+        CheckSeamReach(prefix, entry);
+        _registry.Set(entry);
     }
 
     /// <summary>
-    /// The outdoor objects of the eight neighbours of landblock (<paramref name="x"/>, <paramref name="y"/>)
-    /// whose bounds reach over it, moved into its frame (a fence on a seam is met from both sides).
+    /// Refuses a landblock whose outdoor objects or building cells reach more than
+    /// <see cref="PhysicsConstants.MaxSeamReach"/> past its edges (neighbours look only that far), naming the first.
     /// </summary>
-    private ObjectSurface[] ReachingOver(int x, int y)
+    private static void CheckSeamReach(uint prefix, LandblockEntry entry)
     {
-        List<ObjectSurface>? reaching = null;
-        for (int dx = -1; dx <= 1; dx++)
+        const float reach = PhysicsConstants.MaxSeamReach, far = PhysicsConstants.LandblockSize + PhysicsConstants.MaxSeamReach;
+        if (entry.OutdoorMin.X >= -reach && entry.OutdoorMin.Y >= -reach && entry.OutdoorMax.X <= far && entry.OutdoorMax.Y <= far)
         {
-            for (int dy = -1; dy <= 1; dy++)
-            {
-                if ((dx, dy) == (0, 0) || _registry.Get(x + dx, y + dy) is not LandblockEntry neighbour)
-                {
-                    continue;
-                }
+            return;
+        }
 
-                // The neighbour's frame → this one's: a point p there is p + offset here.
-                var offset = new Vector2(dx * PhysicsConstants.LandblockSize, dy * PhysicsConstants.LandblockSize);
-                for (int i = 0; i < neighbour.OwnObjectCount; i++)
-                {
-                    ObjectSurface o = neighbour.OutdoorObjects[i];
-                    if (o.BoundsMax.X + offset.X >= 0f && o.BoundsMin.X + offset.X <= PhysicsConstants.LandblockSize
-                        && o.BoundsMax.Y + offset.Y >= 0f && o.BoundsMin.Y + offset.Y <= PhysicsConstants.LandblockSize)
-                    {
-                        (reaching ??= []).Add(o.Shifted(offset));
-                    }
-                }
+        for (int i = 0; i < entry.OutdoorObjects.Length; i++)
+        {
+            Beyond(ObjectBox.GridBounds(entry.OutdoorObjects[i]), $"object 0x{entry.OutdoorObjects[i].ObjectId:X8} (outdoor object {i})", "objects");
+        }
+
+        for (int i = 0; i < entry.Cells.Length; i++)
+        {
+            if (entry.MetOutdoors[i])
+            {
+                Beyond(entry.Cells[i].WallBounds(), $"cell 0x{entry.Cells[i].CellId:X8}'s walls", "cells");
             }
         }
 
-        return reaching?.ToArray() ?? [];
-    }
-
-    /// <summary>
-    /// Republishes each neighbour of landblock (<paramref name="x"/>, <paramref name="y"/>) whose set of
-    /// objects reaching over it changed (this landblock was added, replaced or removed), each in one step.
-    /// </summary>
-    private void RefreshNeighbours(int x, int y)
-    {
-        for (int dx = -1; dx <= 1; dx++)
+        void Beyond((Vector2 Min, Vector2 Max) box, string what, string argument)
         {
-            for (int dy = -1; dy <= 1; dy++)
+            if (!(box.Min.X >= -reach && box.Min.Y >= -reach && box.Max.X <= far && box.Max.Y <= far) && box.Min.X <= box.Max.X)
             {
-                if ((dx, dy) == (0, 0) || _registry.Get(x + dx, y + dy) is not LandblockEntry neighbour)
-                {
-                    continue;
-                }
-
-                ObjectSurface[] reaching = ReachingOver(x + dx, y + dy);
-                if (reaching.Length > 0 || neighbour.OutdoorObjects.Length > neighbour.OwnObjectCount)
-                {
-                    _registry.Set(neighbour.WithNeighbourObjects(reaching));
-                }
+                throw new ArgumentException(
+                    $"landblock 0x{prefix | 0xFFFF:X8}: {what} reach from {box.Min} to {box.Max}, more than {reach} m past the landblock (0..192 m); " +
+                    "outdoor objects and the walls of buildings may reach at most PhysicsConstants.MaxSeamReach past its edges.",
+                    argument);
             }
         }
     }
@@ -472,11 +453,7 @@ public sealed class PhysicsEngine
     public void RemoveLandblock(uint landblockId)
     {
         int x = CellIds.LandblockX(landblockId), y = CellIds.LandblockY(landblockId);
-        if (_registry.Get(x, y) is not null)
-        {
-            _registry.Remove(x, y);
-            RefreshNeighbours(x, y);
-        }
+        _registry.Remove(x, y);
     }
 
     /// <summary>
@@ -519,7 +496,8 @@ public sealed class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         MovementOptions none = default; // no effects: the spec's engine
-        var query = new MoveQuery(currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
+        var lands = new Neighbourhood(_registry);
+        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
         return _point.Step(ref query);
     }
 
@@ -546,19 +524,44 @@ public sealed class PhysicsEngine
         in MovementOptions options)
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var move = new Vector2(delta.X, delta.Y);
-        if (options.Body is MoverBody body && (move == Vector2.Zero || !_planner.IsOpenGround(currentPos, currentCellId, move, body)))
+        var lands = new Neighbourhood(_registry);
+        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
+        if (options.Body is MoverBody body && (query.Delta == Vector2.Zero || !_planner.IsOpenGround(ref lands, currentPos, currentCellId, query.Delta, body)))
         {
-            return _body.Resolve(currentPos, currentCellId, move, stepUpHeight, in options, contourLeft: true);
+            return _body.Resolve(ref query, contourLeft: true);
         }
 
         // No body, or a body on open ground (no wall in its reach): the point move is the answer.
-        ResolveResult result = _point.Move(currentPos, currentCellId, move, stepUpHeight, in options);
+        ResolveResult result = _point.Move(ref query);
         return result.Outcome == ResolveOutcome.SlopeTooSteep && options.Body.HasValue && options.WalkableSlope
-            ? _body.AlongContour(currentPos, currentCellId, move, stepUpHeight, in options, result)
+            ? _body.AlongContour(ref query, result)
             : result;
     }
 
+
+    /// <summary>Tests' seam: whether a body's move needs no plan (<see cref="BodyPlanner.IsOpenGround"/>), as <c>Resolve</c> asks it.</summary>
+    internal bool IsOpenGround(Vector3 position, uint cellId, Vector2 move, MoverBody body)
+    {
+        var lands = new Neighbourhood(_registry);
+        return _planner.IsOpenGround(ref lands, position, cellId, move, body);
+    }
+
+    /// <summary>Tests' seam: a body's move always planned (<see cref="BodyResolver.Resolve"/>), never the open-ground shortcut.</summary>
+    internal ResolveResult ResolvePlanned(Vector3 position, uint cellId, Vector2 move, float stepUpHeight, in MovementOptions options)
+    {
+        var lands = new Neighbourhood(_registry);
+        var query = new MoveQuery(ref lands, position, cellId, move, stepUpHeight, in options);
+        return _body.Resolve(ref query, contourLeft: true);
+    }
+
+    /// <summary>Tests' seam: how far a body overlaps the walls of its band beyond its sink (<see cref="BodyPlanner.Overlap"/>), metres.</summary>
+    internal float BodyOverlap(Vector3 position, uint cellId, float stepUpHeight, MoverBody body)
+    {
+        var lands = new Neighbourhood(_registry);
+        MovementOptions options = new() { Body = body };
+        var query = new MoveQuery(ref lands, position, cellId, Vector2.Zero, stepUpHeight, in options);
+        return _planner.Overlap(ref query, position, cellId, body, out _);
+    }
 
     private static (int X, int Y) CheckedCentre(uint centerLandblockId)
     {

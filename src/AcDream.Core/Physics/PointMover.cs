@@ -11,34 +11,36 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
 {
     /// <summary>A point's move: swept in sub-steps when <see cref="MovementOptions.SweepStepLength"/> asks, else one step.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // Resolve's own path: inlined there, so the call with no body is the code it was
-    public ResolveResult Move(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options)
+    public ResolveResult Move(ref MoveQuery q)
     {
-        if (options.SweepStepLength is float sweep && move.LengthSquared() > sweep * sweep)
+        if (q.Options.SweepStepLength is float sweep && q.Delta.LengthSquared() > sweep * sweep)
         {
-            return Sweep(pos, cellId, move, stepUp, in options, sweep);
+            return Sweep(ref q, sweep);
         }
 
-        var query = new MoveQuery(pos, cellId, move, stepUp, in options);
-        return Step(ref query);
+        return Step(ref q);
     }
 
     /// <summary>Equal sub-steps no longer than <paramref name="sweep"/>, stopping at the first refused one, whose outcome the answer reports.</summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: its queries would be zeroed on every call, swept or not
-    private ResolveResult Sweep(Vector3 pos, uint cellId, Vector2 move, float stepUp, in MovementOptions options, float sweep)
+    private ResolveResult Sweep(ref MoveQuery q, float sweep)
     {
-        int steps = (int)Math.Min(Math.Ceiling(move.Length() / (double)sweep), PhysicsConstants.MaxSweepSteps);
-        Vector2 step = move / steps;
-        var query = new MoveQuery(pos, cellId, step, stepUp, in options);
+        int steps = SubSteps(q.Delta, sweep);
+        Vector2 step = q.Delta / steps;
+        MoveQuery query = q.Next(q.Position, q.CellId, step);
         ResolveResult result = Step(ref query);
         for (int i = 1; i < steps && !result.IsRefused; i++)
         {
-            query = new MoveQuery(result.Position, result.CellId, step, stepUp, in options);
-            ResolveResult next = Step(ref query);
-            result = next.IsRefused ? result with { Outcome = next.Outcome, SurfaceNormal = next.SurfaceNormal } : next;
+            query = q.Next(result.Position, result.CellId, step);
+            result = Answers.Continue(result, Step(ref query));
         }
 
         return result;
     }
+
+    /// <summary>How many equal sub-steps no longer than <paramref name="sweep"/> a move of <paramref name="move"/> takes (at most <see cref="PhysicsConstants.MaxSweepSteps"/>).</summary>
+    public static int SubSteps(Vector2 move, float sweep) =>
+        (int)Math.Min(Math.Ceiling(move.Length() / (double)sweep), PhysicsConstants.MaxSweepSteps);
 
     /// <summary>One move, end-point checked.</summary>
     public ResolveResult Step(ref MoveQuery query) =>

@@ -6,9 +6,10 @@ namespace AcDream.Core.Physics;
 /// Indoor portal traversal: where a move from p0 to p1 that starts in a cell ends, following the
 /// doorways it crosses and the floor openings it stands over, through as many cells as it passes
 /// (at most <see cref="PhysicsConstants.MaxPortalHops"/> deep and <see cref="PhysicsConstants.MaxCellVisits"/>
-/// visits in all). Reads the registry only to land on the terrain beyond a portal to the outdoors.
+/// visits in all). Reads another landblock (through the call's <see cref="Neighbourhood"/>) only to land on
+/// the terrain beyond a portal to the outdoors.
 /// </summary>
-internal sealed class PortalTraversal(LandblockRegistry registry)
+internal sealed class PortalTraversal
 {
     /// <summary>
     /// Where the move <paramref name="q"/> (its entry, p0, p1, feet Z and step) ends when it is in
@@ -123,7 +124,7 @@ internal sealed class PortalTraversal(LandblockRegistry registry)
             int x = q.Entry.X, y = q.Entry.Y;
             WorldFrame.Wrap(ref local.X, ref x);
             WorldFrame.Wrap(ref local.Y, ref y);
-            LandblockEntry? land = q.Landblock(registry, x, y); // the cell's own landblock as already read, not a second read
+            LandblockEntry? land = q.Lands.Get(x, y);
             return land is null
                 ? Landing.Blocked(CellIds.IsInWorld(x, y) ? ResolveOutcome.UnloadedAhead : ResolveOutcome.EdgeOfWorld)
                 : Landing.OnTerrain(ref q, land, local, land.Terrain.SampleZUnchecked(local.X, local.Y));

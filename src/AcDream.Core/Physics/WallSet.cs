@@ -3,151 +3,162 @@ using System.Numerics;
 namespace AcDream.Core.Physics;
 
 /// <summary>
-/// The cells whose walls one body move meets, gathered once per call: near the move in the mover's
-/// cell and the cells its portals lead to (indoors), or over the outdoor squares it covers, in its
-/// own landblock and the neighbours across a seam (outdoors). Held on the stack; the cells are
-/// referred to by landblock slot and index, with each slot's offset into the move's frame.
+/// The walls around one body move: every wall it can meet is found where a sweep asks for it, in the
+/// landblock's grids (<see cref="LandblockEntry.CellWalls"/>, <see cref="LandblockEntry.Objects"/>) over the
+/// sweep's own box, nothing gathered beforehand and nothing left out however many walls stand near. Indoors:
+/// the walls of the landblock's cells and of the objects standing in them. Outdoors: the walls of its
+/// buildings' cells and its outdoor objects, and those of a neighbouring landblock whose own reach the box
+/// meets across a seam (read through the call's <see cref="Neighbourhood"/>, so each once). All in the mover's
+/// landblock frame (landblock-local metres); allocation-free.
 /// </summary>
 internal ref struct WallSet
 {
-    /// <summary>Marks an entry that is an outdoor object of its landblock (<see cref="LandblockEntry.OutdoorObjects"/>), not a cell; indices stay below it.</summary>
-    public const int ObjectFlag = 0x10000;
+    private readonly ref Neighbourhood _lands;
+    private readonly LandblockEntry _entry;
+    private readonly bool _indoors;
 
-    private readonly Span<int> _cells; // slot << 17 | cell index (< 0x10000), or slot << 17 | ObjectFlag | outdoor object index
-    private LandblockEntry? _slot0, _slot1, _slot2, _slot3;
-    private Vector2 _offset0, _offset1, _offset2, _offset3;
-    private int _slots;
-    private int _count;
-
-    /// <summary>An empty set over <paramref name="storage"/>, for the move box centred on <paramref name="centre"/> with half-size <paramref name="reach"/>.</summary>
-    public WallSet(Span<int> storage, Vector2 centre, float reach)
+    /// <summary>The walls around a mover in landblock <paramref name="entry"/> (indoors: in one of its cells).</summary>
+    public WallSet(ref Neighbourhood lands, LandblockEntry entry, bool indoors)
     {
-        _cells = storage;
-        BoxMin = centre - new Vector2(reach);
-        BoxMax = centre + new Vector2(reach);
+        _lands = ref lands;
+        _entry = entry;
+        _indoors = indoors;
     }
-
-    /// <summary>Every point the body can reach this call lies in this box (move's frame): the start ± (move length + radius).</summary>
-    public Vector2 BoxMin { get; }
-
-    public Vector2 BoxMax { get; }
-
-    public readonly int Count => _count;
-
-    /// <summary>Adds landblock <paramref name="entry"/>, whose frame is <paramref name="offset"/> from the move's; returns its slot.</summary>
-    public int AddLandblock(LandblockEntry entry, Vector2 offset)
-    {
-        switch (_slots)
-        {
-            case 0: (_slot0, _offset0) = (entry, offset); break;
-            case 1: (_slot1, _offset1) = (entry, offset); break;
-            case 2: (_slot2, _offset2) = (entry, offset); break;
-            default: (_slot3, _offset3) = (entry, offset); break;
-        }
-
-        return _slots++;
-    }
-
-    /// <summary>Adds cell <paramref name="cellIndex"/> of slot <paramref name="slot"/> unless it is present; false (nothing added) when the set is full.</summary>
-    public bool TryAdd(int slot, int cellIndex)
-    {
-        int key = (slot << 17) | cellIndex;
-        for (int i = 0; i < _count; i++)
-        {
-            if (_cells[i] == key)
-            {
-                return true;
-            }
-        }
-
-        if (_count == _cells.Length)
-        {
-            return false;
-        }
-
-        _cells[_count++] = key;
-        return true;
-    }
-
-    /// <summary>The cell at <paramref name="i"/> (insertion order) with its landblock slot.</summary>
-    public readonly (int Slot, int Cell) At(int i) => (_cells[i] >> 17, _cells[i] & 0x1FFFF);
-
-    /// <summary>Whether the box, moved into a landblock's frame by −<paramref name="offset"/>, overlaps the bounds given.</summary>
-    public readonly bool Overlaps(Vector2 min, Vector2 max, Vector2 offset) =>
-        min.X <= BoxMax.X - offset.X && max.X >= BoxMin.X - offset.X && min.Y <= BoxMax.Y - offset.Y && max.Y >= BoxMin.Y - offset.Y;
-
-    /// <summary>The landblock in slot <paramref name="slot"/> and its offset.</summary>
-    public readonly (LandblockEntry Entry, Vector2 Offset) Slot(int slot) => slot switch
-    {
-        0 => (_slot0!, _offset0),
-        1 => (_slot1!, _offset1),
-        2 => (_slot2!, _offset2),
-        _ => (_slot3!, _offset3),
-    };
 
     /// <summary>
-    /// Sweeps the body (contact radius <paramref name="radius"/>) from <paramref name="p"/> along
-    /// <paramref name="d"/> against every gathered wall in the band (a wall's end counts only if the move
-    /// comes closer than <paramref name="graze"/> to it): the earliest contact below
-    /// <paramref name="t"/>, with its normal; and the deepest overlap at <paramref name="p"/> beyond
-    /// <paramref name="depth"/>, with the normal out of it.
+    /// Sweeps <paramref name="move"/> against every wall in its band whose bounds its box (the move grown by
+    /// its radius and the contact tolerance) meets: the earliest contact before <c>hit.T</c>, and the deepest
+    /// overlap at its start, into <paramref name="hit"/>.
     /// </summary>
-    public readonly void Sweep(Vector2 p, Vector2 d, float radius, float graze, float zLow, float zHigh, ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
+    public readonly void Sweep(in BodyMove move, ref WallHit hit)
     {
-        // This sweep's own box (the move segment grown by the radius and the contact tolerance): a wall
-        // outside it cannot be touched now, whatever the call's box says.
-        float grow = radius + PhysicsConstants.ContactTolerance;
-        Vector2 lo = Vector2.Min(p, p + d) - new Vector2(grow), hi = Vector2.Max(p, p + d) + new Vector2(grow);
-        for (int i = 0; i < _count; i++)
-        {
-            (int slot, int index) = At(i);
-            (LandblockEntry entry, Vector2 offset) = Slot(slot);
-            Vector2 cellLo = lo - offset, cellHi = hi - offset;
-            if ((index & ObjectFlag) != 0)
-            {
-                SweepWalls(entry.OutdoorObjects[index & ~ObjectFlag].Walls, offset, cellLo, cellHi, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
-                continue;
-            }
-
-            CellSurface cell = entry.Cells[index];
-            SweepWalls(cell.Walls, offset, cellLo, cellHi, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
-            foreach (ObjectSurface o in cell.Objects)
-            {
-                SweepWalls(o.Walls, offset, cellLo, cellHi, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
-            }
-        }
+        float grow = move.Radius + PhysicsConstants.ContactTolerance;
+        Vector2 lo = Vector2.Min(move.P, move.P + move.D) - new Vector2(grow), hi = Vector2.Max(move.P, move.P + move.D) + new Vector2(grow);
+        var sweep = new Sweeper(move, hit);
+        Visit(lo, hi, ref sweep);
+        hit = sweep.Hit;
     }
 
-    /// <summary>One cell's or object's walls (landblock frame <paramref name="offset"/> from the move's) in the sweep's box and band.</summary>
-    private static void SweepWalls(
-        CellWalls walls, Vector2 offset, Vector2 cellLo, Vector2 cellHi, Vector2 p, Vector2 d, float radius, float graze, float zLow, float zHigh,
-        ref float t, ref Vector2 normal, ref float depth, ref Vector2 outward)
+    /// <summary>Whether any wall's bounds (seen from above) meet the box <paramref name="lo"/>–<paramref name="hi"/>: false is certain.</summary>
+    public readonly bool Any(Vector2 lo, Vector2 hi)
     {
-        if (walls.Min.X > cellHi.X || walls.Max.X < cellLo.X || walls.Min.Y > cellHi.Y || walls.Max.Y < cellLo.Y)
+        var any = new AnyWall();
+        Visit(lo, hi, ref any);
+        return any.Found;
+    }
+
+    /// <summary>Hands every cell and object whose walls' bounds may meet the box to <paramref name="visitor"/>, until it stops.</summary>
+    private readonly void Visit<T>(Vector2 lo, Vector2 hi, ref T visitor)
+        where T : struct, IWallVisitor
+    {
+        if (_indoors)
+        {
+            Visit(_entry, default, lo, hi, ref visitor);
+            return;
+        }
+
+        if (!Visit(_entry, default, lo, hi, ref visitor))
         {
             return;
         }
 
-        ReadOnlySpan<Vector3> vertices = walls.Vertices;
-        foreach (ref readonly WallPolygon wall in walls.Polygons.AsSpan())
+        SeamNeighbours across = Neighbourhood.Across(ref _lands, _entry, lo, hi);
+        while (across.MoveNext() && Visit(across.Current, across.Offset, lo, hi, ref visitor))
         {
-            if (wall.ZMax <= zLow || wall.ZMin >= zHigh
-                || wall.Min.X > cellHi.X || wall.Max.X < cellLo.X || wall.Min.Y > cellHi.Y || wall.Max.Y < cellLo.Y)
-            {
-                continue;
-            }
-
-            if (wall.IsUpright)
-            {
-                // A cylinder (Radius > 0) is met at the sum of the radii, and so is its graze: the graze is
-                // measured from the contact radius, else every move coming no nearer the axis than the body's
-                // own graze was taken for a graze and the body walked into the trunk up to its own radius.
-                BodySweep.SweepSegment(p, d, wall.A + offset, wall.B + offset, radius + wall.Radius, graze + wall.Radius, ref t, ref normal, ref depth, ref outward);
-            }
-            else
-            {
-                BodySweep.SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, p, d, radius, graze, zLow, zHigh, ref t, ref normal, ref depth, ref outward);
-            }
         }
     }
+
+    /// <summary>One landblock's walls (its frame <paramref name="offset"/> from the mover's) for the box; false when the visitor stopped.</summary>
+    private readonly bool Visit<T>(LandblockEntry entry, Vector2 offset, Vector2 lo, Vector2 hi, ref T visitor)
+        where T : struct, IWallVisitor
+    {
+        lo -= offset;
+        hi -= offset;
+        var cells = new CellVisit<T>(entry, offset, lo, hi, ref visitor);
+        if ((_indoors ? entry.CellWalls : entry.OutdoorCellWalls) is BoxGrid cellGrid && !cellGrid.Query(lo, hi, ref cells))
+        {
+            return false;
+        }
+
+        if (_indoors || entry.OutdoorObjects.Length == 0)
+        {
+            return true;
+        }
+
+        var objects = new ObjectVisit<T>(entry, offset, lo, hi, ref visitor);
+        return entry.Objects.Query(lo, hi, ref objects);
+    }
+
+    /// <summary>A cell of the grid: its walls and its objects' walls.</summary>
+    private ref struct CellVisit<T>(LandblockEntry entry, Vector2 offset, Vector2 lo, Vector2 hi, ref T visitor) : IBoxVisitor
+        where T : struct, IWallVisitor
+    {
+        private ref T _visitor = ref visitor;
+
+        public bool Visit(int item)
+        {
+            CellSurface cell = entry.Cells[item];
+            if (!_visitor.Walls(cell.Walls, offset, lo, hi))
+            {
+                return false;
+            }
+
+            foreach (ObjectSurface o in cell.Objects)
+            {
+                if (!_visitor.Walls(o.Walls, offset, lo, hi))
+                {
+                    return false;
+                }
+            }
+
+            return true;
+        }
+    }
+
+    /// <summary>An outdoor object of the fine grid: its box's walls' bounds first, then its walls.</summary>
+    private ref struct ObjectVisit<T>(LandblockEntry entry, Vector2 offset, Vector2 lo, Vector2 hi, ref T visitor) : IBoxVisitor
+        where T : struct, IWallVisitor
+    {
+        private ref T _visitor = ref visitor;
+
+        public bool Visit(int item)
+        {
+            ref readonly ObjectBox b = ref entry.ObjectBoxes[item];
+            return b.WallMin.X > hi.X || b.WallMax.X < lo.X || b.WallMin.Y > hi.Y || b.WallMax.Y < lo.Y
+                || _visitor.Walls(entry.OutdoorObjects[item].Walls, offset, lo, hi);
+        }
+    }
+
+    /// <summary>Sweeps a body move against the walls handed to it.</summary>
+    private struct Sweeper(BodyMove move, WallHit hit) : IWallVisitor
+    {
+        private readonly BodyMove _move = move;
+
+        public WallHit Hit = hit;
+
+        public bool Walls(CellWalls walls, Vector2 offset, Vector2 lo, Vector2 hi)
+        {
+            BodySweep.SweepWalls(walls, offset, lo, hi, in _move, ref Hit);
+            return true;
+        }
+    }
+
+    /// <summary>Stops at the first walls whose bounds meet the box.</summary>
+    private struct AnyWall : IWallVisitor
+    {
+        public bool Found;
+
+        public bool Walls(CellWalls walls, Vector2 offset, Vector2 lo, Vector2 hi)
+        {
+            Found = walls.Polygons.Length > 0 && walls.Min.X <= hi.X && walls.Max.X >= lo.X && walls.Min.Y <= hi.Y && walls.Max.Y >= lo.Y;
+            return !Found;
+        }
+    }
+}
+
+/// <summary>What <see cref="WallSet"/> hands one cell's or object's walls to, with the box in their landblock's frame.</summary>
+internal interface IWallVisitor
+{
+    /// <summary>Handles <paramref name="walls"/> (their landblock frame <paramref name="offset"/> from the mover's; the box <paramref name="lo"/>–<paramref name="hi"/> in theirs); false stops the visit.</summary>
+    bool Walls(CellWalls walls, Vector2 offset, Vector2 lo, Vector2 hi);
 }

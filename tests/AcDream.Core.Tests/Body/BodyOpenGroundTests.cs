@@ -40,8 +40,6 @@ public class BodyOpenGroundTests(ITestOutputHelper output)
         }
 
         engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), HoltburgCells.Surfaces(), objects);
-        BodyPlanner planner = EngineParts.Planner(engine);
-        BodyResolver body = EngineParts.Body(engine);
         Vector3 origin = engine.GetLandblockOrigin(Holtburg);
         var random = new Random(frame.Length + effects.Length);
         int shortcut = 0, planned = 0, nearWall = 0;
@@ -52,7 +50,7 @@ public class BodyOpenGroundTests(ITestOutputHelper output)
             float heading = (float)(random.NextDouble() * 2 * Math.PI);
             var move = new Vector2(MathF.Cos(heading) * length, MathF.Sin(heading) * length);
             ResolveResult at = engine.Resolve(origin + new Vector3(start, GroundZ), 0xA9B40000, Vector3.Zero, 0.6f, in options);
-            if (CellIds.IsIndoor(at.CellId) || at.Outcome != ResolveOutcome.Moved || planner.Overlap(at.Position, at.CellId, 0.6f, MoverBody.Player, out _) > 0f)
+            if (CellIds.IsIndoor(at.CellId) || at.Outcome != ResolveOutcome.Moved || engine.BodyOverlap(at.Position, at.CellId, 0.6f, MoverBody.Player) > 0f)
             {
                 continue; // indoors (always planned), or a start the body does not stand clear at
             }
@@ -60,8 +58,8 @@ public class BodyOpenGroundTests(ITestOutputHelper output)
             string what = $"{frame}, {effects}: from {at.Position - origin:R} by {move:R}";
             var delta = new Vector3(move, 0f);
             ResolveResult answer = engine.Resolve(at.Position, at.CellId, delta, 0.6f, in options);
-            ResolveResult plan = body.Resolve(at.Position, at.CellId, move, 0.6f, in options, contourLeft: true);
-            if (planner.IsOpenGround(at.Position, at.CellId, move, MoverBody.Player))
+            ResolveResult plan = engine.ResolvePlanned(at.Position, at.CellId, move, 0.6f, in options);
+            if (engine.IsOpenGround(at.Position, at.CellId, move, MoverBody.Player))
             {
                 shortcut++;
                 if (options.SweepStepLength is float sweep && length > sweep)
@@ -77,7 +75,7 @@ public class BodyOpenGroundTests(ITestOutputHelper output)
                     answer.Should().Be(plan, what);
                 }
 
-                nearWall += planner.Overlap(at.Position, at.CellId, 0.6f, new MoverBody(length + 1.5f, 2f), out _) > 0f ? 1 : 0;
+                nearWall += engine.BodyOverlap(at.Position, at.CellId, 0.6f, new MoverBody(length + 1.5f, 2f)) > 0f ? 1 : 0;
             }
             else
             {
