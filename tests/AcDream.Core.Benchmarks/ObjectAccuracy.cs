@@ -60,20 +60,18 @@ internal static class ObjectAccuracy
                 float fx = (float)x, fy = (float)y;
                 float feet = (float)reference.PlaneZ(floor, fx, fy);
                 uint cell = 0xA9B40000u | World.OutdoorCell(fx, fy);
-                double ceiling = (double)feet + Step;
                 if (reference.EdgeDistance(fx, fy) < NearEdge)
                 {
                     nearEdge++;
                     continue;
                 }
 
-                if (reference.NearLevel(fx, fy, ceiling, NearCeiling))
+                if (reference.AtRest(fx, fy, feet, Step, NearCeiling) is not double want)
                 {
                     nearCeiling++;
                     continue;
                 }
 
-                double want = reference.TopZ(fx, fy, ceiling)!.Value;
                 if (!engine.TryGetGround(new Vector3(fx, fy, feet), cell, Step, out float got, out _, out uint objectId) || objectId != gfxObj.Id)
                 {
                     groundMissed++;
@@ -87,7 +85,8 @@ internal static class ObjectAccuracy
                 // Resolve: a literal 2 cm move ending at the point, from a start on a floor of the object.
                 Vector3 delta = World.RandomDelta(random, 0.02f, 0.02f);
                 float sx = fx - delta.X, sy = fy - delta.Y;
-                if (reference.EdgeDistance(sx, sy) < NearEdge || reference.TopZ(sx, sy, ceiling) is not double startZ || reference.NearLevel(sx, sy, startZ + Step, NearCeiling))
+                if (reference.EdgeDistance(sx, sy) < NearEdge || reference.AtRest(sx, sy, feet, Step, NearCeiling) is not double startZ
+                    || reference.AtRest(sx, sy, startZ, Step, NearCeiling) != startZ)
                 {
                     noStart++;
                     continue;
@@ -101,9 +100,8 @@ internal static class ObjectAccuracy
                     continue;
                 }
 
-                double endCeiling = (double)start.Z + Step;
-                if (reference.EdgeDistance(r.Position.X, r.Position.Y) < NearEdge || reference.NearLevel(r.Position.X, r.Position.Y, endCeiling, NearCeiling)
-                    || reference.TopZ(r.Position.X, r.Position.Y, endCeiling) is not double wantEnd)
+                if (reference.EdgeDistance(r.Position.X, r.Position.Y) < NearEdge
+                    || reference.AtRest(r.Position.X, r.Position.Y, start.Z, Step, NearCeiling) is not double wantEnd)
                 {
                     noStart++;
                     continue;

@@ -96,6 +96,39 @@ internal sealed class ReferenceObjectFloor
         return best;
     }
 
+    /// <summary>
+    /// The floor a mover with its feet at <paramref name="feet"/> and step <paramref name="step"/> comes to rest on
+    /// at (x, y), as the engine's ground rule defines it: the highest floor no higher than the feet plus the step,
+    /// then again from that floor while it is above the feet, until no floor within a step of it is higher. Null
+    /// when there is none, or a floor lies within <paramref name="tolerance"/> of one of the ceilings used (a tie).
+    /// </summary>
+    public double? AtRest(double x, double y, double feet, double step, double tolerance)
+    {
+        double ceiling = feet + step;
+        if (NearLevel(x, y, ceiling, tolerance))
+        {
+            return null;
+        }
+
+        double? ground = TopZ(x, y, ceiling);
+        while (ground is double g && g > feet && g + step > ceiling)
+        {
+            ceiling = g + step;
+            if (NearLevel(x, y, ceiling, tolerance))
+            {
+                return null;
+            }
+
+            ground = TopZ(x, y, ceiling);
+            if (ground == g)
+            {
+                break;
+            }
+        }
+
+        return ground;
+    }
+
     /// <summary>Whether a floor under (x, y) lies within <paramref name="tolerance"/> of <paramref name="level"/>.</summary>
     public bool NearLevel(double x, double y, double level, double tolerance) =>
         _floors.Exists(f => f.Contains(x, y) && Math.Abs(f.PlaneZ(x, y) - level) < tolerance);

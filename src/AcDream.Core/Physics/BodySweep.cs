@@ -387,8 +387,11 @@ internal static class BodySweep
 
             if ((dc >= 0f) != (dn >= 0f))
             {
-                float s = dc / (dc - dn);
-                output[count++] = Vector3.Lerp(current, next, s) with { Z = z };
+                // Written out, not Vector3.Lerp: .NET's Lerp fuses a·(1 − s) + b·s into one multiply-add
+                // where the processor has one and rounds twice where it has not, so its bits would depend
+                // on the machine. These are the unfused bits, the same on every instruction set.
+                float s = dc / (dc - dn), r = 1f - s;
+                output[count++] = new Vector3((current.X * r) + (next.X * s), (current.Y * r) + (next.Y * s), z);
             }
         }
 

@@ -125,7 +125,9 @@ public sealed class CellSurface
     /// The ground a mover with its feet at <paramref name="feetZ"/> and step <paramref name="stepUp"/>
     /// stands on at (x, y): the cell's floor nearest the feet, or the floor of an object standing in the
     /// cell that is higher than that and no more than the step above the feet (a thing on the floor is
-    /// climbed when it is low enough). Without objects, exactly <see cref="TrySampleFloor(float, float, float, out float)"/>.
+    /// climbed when it is low enough), and so on from there to rest
+    /// (<see cref="ObjectGeometry.RaiseToRest(ReadOnlySpan{ObjectSurface}, float, float, float, float, bool, ref float, out int)"/>).
+    /// Without objects, exactly <see cref="TrySampleFloor(float, float, float, out float)"/>.
     /// </summary>
     internal bool TrySampleGround(float x, float y, float feetZ, float stepUp, out float z)
     {
@@ -135,7 +137,7 @@ public sealed class CellSurface
             return found;
         }
 
-        return ObjectGeometry.Raise(Objects, x, y, feetZ + stepUp, found, ref z, out _) || found;
+        return ObjectGeometry.RaiseToRest(Objects, x, y, feetZ, stepUp, found, ref z, out _) || found;
     }
 
     /// <summary>Landblock-local XY bounds of the floor, grown by the edge tolerance; empty when there is no floor.</summary>

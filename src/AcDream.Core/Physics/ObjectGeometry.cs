@@ -29,6 +29,32 @@ internal static class ObjectGeometry
     }
 
     /// <summary>
+    /// The ground a mover with its feet at <paramref name="feetZ"/> and step <paramref name="stepUp"/> comes to
+    /// rest on at (x, y), from <paramref name="z"/> (the floor under it, <paramref name="found"/>): raised to the
+    /// highest floor of <paramref name="objects"/> no more than the step above the feet, and again from there
+    /// while that lifts it (a step from the terrain it climbed, a tread from a tread), until no floor within a
+    /// step of where it stands is higher. What makes standing still on the answer give the answer again.
+    /// <paramref name="objectIndex"/>: the object whose floor it rests on (−1: not raised).
+    /// </summary>
+    public static bool RaiseToRest(ReadOnlySpan<ObjectSurface> objects, float x, float y, float feetZ, float stepUp, bool found, ref float z, out int objectIndex)
+    {
+        objectIndex = -1;
+        float ceiling = (found && z > feetZ ? z : feetZ) + stepUp;
+        while (Raise(objects, x, y, ceiling, found, ref z, out int raised))
+        {
+            (found, objectIndex) = (true, raised);
+            if (!(z > feetZ && z + stepUp > ceiling))
+            {
+                break;
+            }
+
+            ceiling = z + stepUp;
+        }
+
+        return objectIndex >= 0;
+    }
+
+    /// <summary>
     /// The first wall of <paramref name="objects"/> that the move <paramref name="p0"/> → <paramref name="p1"/>
     /// crosses at height <paramref name="h"/> (a point mover's feet plus its step: lower walls are steps),
     /// from either side: fraction <paramref name="t"/> along the move (only crossings before the
@@ -83,17 +109,39 @@ internal static class ObjectGeometry
     }
 
     /// <summary>
-    /// <paramref name="groundZ"/> raised to the highest floor under <paramref name="p"/> (landblock-local to
-    /// <paramref name="entry"/>) of an outdoor object of its landblock or of a neighbour's reaching over the
-    /// seam, no higher than <paramref name="ceilingZ"/>, when above it; <paramref name="floor"/>: whose floor
-    /// (null when not raised).
+    /// The ground a mover with its feet at <paramref name="feetZ"/> and step <paramref name="stepUp"/> comes to
+    /// rest on outdoors at <paramref name="p"/> (landblock-local to <paramref name="entry"/>) over terrain at
+    /// <paramref name="terrainZ"/>: raised to the highest floor of an outdoor object (of its landblock or of a
+    /// neighbour's reaching over the seam) no more than the step above the feet, and on to rest as
+    /// <see cref="RaiseToRest(ref Neighbourhood, LandblockEntry, Vector2, float, float, ref ObjectHit)"/>.
     /// </summary>
-    public static float RaiseOutdoors(ref Neighbourhood lands, LandblockEntry entry, Vector2 p, float ceilingZ, float groundZ, out ObjectSurface? floor)
+    public static ObjectHit GroundOutdoors(ref Neighbourhood lands, LandblockEntry entry, Vector2 p, float feetZ, float stepUp, float terrainZ)
     {
-        var hit = ObjectHit.Over(groundZ);
-        AmongOutdoors(ref lands, entry, p, p, ceilingZ, floors: true, ref hit);
-        floor = hit.Floor;
-        return hit.GroundZ;
+        var hit = ObjectHit.Over(terrainZ);
+        AmongOutdoors(ref lands, entry, p, p, feetZ + stepUp, floors: true, ref hit);
+        RaiseToRest(ref lands, entry, p, feetZ, stepUp, ref hit);
+        return hit;
+    }
+
+    /// <summary>
+    /// Outdoors, after a first pass at the feet plus the step: the ground of <paramref name="hit"/> (at
+    /// <paramref name="p"/>) raised on from where it stands, when that is above the feet (a mover that climbed
+    /// the terrain or a step reaches a floor higher than the feet plus the step), until no floor within a step
+    /// of it is higher: what makes standing still on the answer give the answer again.
+    /// </summary>
+    public static void RaiseToRest(ref Neighbourhood lands, LandblockEntry entry, Vector2 p, float feetZ, float stepUp, ref ObjectHit hit)
+    {
+        float ceiling = feetZ + stepUp;
+        while (hit.GroundZ > feetZ && hit.GroundZ + stepUp > ceiling)
+        {
+            ceiling = hit.GroundZ + stepUp;
+            float ground = hit.GroundZ;
+            AmongOutdoors(ref lands, entry, p, p, ceiling, floors: true, ref hit);
+            if (hit.GroundZ == ground)
+            {
+                return;
+            }
+        }
     }
 
     /// <summary>One object listed over a point move's squares: the wall it crosses first, the floor under its end.</summary>

@@ -122,6 +122,11 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
             ObjectGeometry.AmongOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Stand.Local + q.Delta, h, floors: false, ref hit);
         }
 
+        if (hit.Wall is null)
+        {
+            ObjectGeometry.RaiseToRest(ref q.Lands, q.Entry, q.P1, q.Z, q.StepUp, ref hit);
+        }
+
         (groundZ, normal, onObject) = (hit.GroundZ, hit.Normal, hit.Floor is not null);
         why = hit.Wall is { IsBuilding: true } ? ResolveOutcome.OuterWall : ResolveOutcome.Wall;
         return hit.Wall is not null;
@@ -179,7 +184,7 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
     /// rise beyond the step, a refusal), so a move among objects does not pay for it.
     /// </summary>
     private static float GroundHere(ref MoveQuery q) =>
-        ObjectGeometry.RaiseOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Z + q.StepUp, q.Stand.GroundZ, out _);
+        ObjectGeometry.GroundOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Z, q.StepUp, q.Stand.GroundZ).GroundZ;
 
     /// <summary>
     /// Outdoor entry: the floor, among the cells over the candidate's outdoor cell, nearest the

@@ -142,7 +142,6 @@ public sealed class PhysicsEngine
         }
 
         (groundZ, normal, objectId) = (0f, default, 0u);
-        float ceiling = worldPosition.Z + stepUpHeight;
         var lands = new Neighbourhood(_registry);
         if (LocateQuery(ref lands, worldPosition, cellId, out Vector2 p, out int index) is not LandblockEntry entry)
         {
@@ -154,7 +153,7 @@ public sealed class PhysicsEngine
         {
             CellSurface cell = entry.Cells[index];
             bool found = cell.TrySampleFloor(p.X, p.Y, worldPosition.Z, out groundZ, out normal);
-            if (!ObjectGeometry.Raise(cell.Objects, p.X, p.Y, ceiling, found, ref groundZ, out int hit))
+            if (!ObjectGeometry.RaiseToRest(cell.Objects, p.X, p.Y, worldPosition.Z, stepUpHeight, found, ref groundZ, out int hit))
             {
                 return found;
             }
@@ -165,7 +164,8 @@ public sealed class PhysicsEngine
         {
             groundZ = entry.Terrain.SampleZUnchecked(p.X, p.Y);
             normal = entry.Terrain.NormalUnchecked(p.X, p.Y);
-            groundZ = ObjectGeometry.RaiseOutdoors(ref lands, entry, p, ceiling, groundZ, out floor);
+            ObjectHit ground = ObjectGeometry.GroundOutdoors(ref lands, entry, p, worldPosition.Z, stepUpHeight, groundZ);
+            (groundZ, floor) = (ground.GroundZ, ground.Floor);
             if (floor is null)
             {
                 return true;

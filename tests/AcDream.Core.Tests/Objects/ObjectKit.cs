@@ -89,6 +89,29 @@ internal static class ObjectKit
     }
 
     /// <summary>
+    /// The reference ground a mover with its feet at <paramref name="feet"/> and step <paramref name="step"/> comes
+    /// to rest on at (x, y): <see cref="Ground"/> for feet + step, then again from the ground found while it is
+    /// above the feet and lifts the ceiling (a step from a step), until nothing higher is within a step. Null
+    /// where any of those passes is in doubt.
+    /// </summary>
+    public static double? AtRest(IEnumerable<RefFloor> floors, double x, double y, double feet, double step, double terrain, double margin = 1e-3)
+    {
+        double ceiling = feet + step;
+        double? ground = Ground(floors, x, y, ceiling, terrain, margin);
+        while (ground is double g && g > feet && g + step > ceiling)
+        {
+            ceiling = g + step;
+            ground = Ground(floors, x, y, ceiling, terrain, margin);
+            if (ground == g)
+            {
+                break;
+            }
+        }
+
+        return ground;
+    }
+
+    /// <summary>
     /// The reference ground under (x, y) for feet + step = <paramref name="ceiling"/>: the highest walkable
     /// polygon's plane there no higher than the ceiling, when above <paramref name="terrain"/>. Null when
     /// (x, y) is within <paramref name="margin"/> of a floor's edge, a candidate within the margin of the

@@ -70,7 +70,7 @@ public class RandomPlacementTests(ITestOutputHelper output)
                     double y = o.BoundsMin.Y + (random.NextDouble() * (o.BoundsMax.Y - o.BoundsMin.Y));
                     var p = new Vector3((float)x, (float)y, o.BoundsMin.Z + (float)(random.NextDouble() * (o.BoundsMax.Z - o.BoundsMin.Z + 1)));
                     float step = (float)(random.NextDouble() * 1.5);
-                    double? expected = ObjectKit.Ground(floors, p.X, p.Y, (double)p.Z + step, TerrainZ);
+                    double? expected = ObjectKit.AtRest(floors, p.X, p.Y, p.Z, step, TerrainZ);
                     if (expected is not double want)
                     {
                         continue;
@@ -95,7 +95,7 @@ public class RandomPlacementTests(ITestOutputHelper output)
                     float heading = (float)(random.NextDouble() * 2 * Math.PI);
                     var from = new Vector3(p.X - (0.05f * MathF.Cos(heading)), p.Y - (0.05f * MathF.Sin(heading)), p.Z);
                     ResolveResult m = engine.Resolve(from, Outdoor, p - from, step);
-                    if (!m.IsRefused && ObjectKit.Ground(floors, m.Position.X, m.Position.Y, (double)p.Z + step, TerrainZ) is double wantEnd)
+                    if (!m.IsRefused && ObjectKit.AtRest(floors, m.Position.X, m.Position.Y, p.Z, step, TerrainZ) is double wantEnd)
                     {
                         m.Position.Z.Should().BeApproximately((float)wantEnd, 1e-4f, $"{what}: move from {from:R} → {m}");
                         maxMove = Math.Max(maxMove, Math.Abs(m.Position.Z - wantEnd));

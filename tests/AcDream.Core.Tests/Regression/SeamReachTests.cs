@@ -1,0 +1,69 @@
+using System.Numerics;
+using AcDream.Core.Physics;
+using AcDream.Testing;
+using static AcDream.Core.Tests.TestData;
+
+namespace AcDream.Core.Tests.Regression;
+
+/// <summary>
+/// Walls of a neighbour's building cell that reach far over the seam are met wherever they stand, not only
+/// when the move's own box crosses the seam: a body 5 m from the seam, moving 1 m at a time toward such a
+/// wall 3.5 m into its landblock, stops at it (it walked through before, both frames).
+/// </summary>
+public class SeamReachTests
+{
+    private const float GroundZ = 94f;
+
+    [Theory]
+    [InlineData("global", false)]
+    [InlineData("centred", false)]
+    [InlineData("global", true)]
+    [InlineData("centred", true)]
+    public void A_neighbours_wall_reaching_far_over_the_seam_stops_the_body(string frame, bool player)
+    {
+        const uint east = 0xAAB4FFFFu;
+        PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(Holtburg);
+        engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), []);
+
+        // The east neighbour's building cell: a wall along x = -3.5 (its frame: 3.5 m west of the seam, in
+        // Holtburg) from y 90 to 110, 4 m high, no floor, and a door to the outdoors east of the seam.
+        CellSurface cell = new CellBuilder(0xAAB40100u, new Vector3(0f, 100f, GroundZ))
+            .Physics(Wall(-3.5f, -10f, -3.5f, 10f, 0f, 4f))
+            .Portal(0xFFFF, new Vector3(3.5f, 1f, 1f), new(3f, 0.5f, 0f), new(4f, 0.5f, 0f), new(4f, 0.5f, 2f), new(3f, 0.5f, 2f)).Build();
+        engine.AddLandblock(east, FlatTerrain(GroundZ, east), [cell]);
+
+        MovementOptions options = player ? MovementOptions.Player : new MovementOptions { Body = MoverBody.Player };
+        Vector3 origin = engine.GetLandblockOrigin(Holtburg);
+        var at = new ResolveResult(origin + new Vector3(187f, 100f, GroundZ), 0xA9B40000u, true);
+        for (int i = 0; i < 6; i++)
+        {
+            at = engine.Resolve(at.Position, at.CellId, new Vector3(1f, 0f, 0f), 0.6f, in options);
+            (at.Position.X - origin.X).Should().BeLessThanOrEqualTo(188.5f - 0.479f, $"{frame}, move {i}: {at}");
+        }
+
+        at.Outcome.Should().Be(ResolveOutcome.Wall, $"{frame}: pressed against the wall: {at}");
+    }
+
+    [Fact]
+    public void A_building_or_object_reaching_past_the_seam_reach_is_refused_by_name_and_a_dungeon_is_not()
+    {
+        var engine = new PhysicsEngine(Holtburg);
+        CellSurface building = new CellBuilder(0xA9B40100u, new Vector3(190f, 100f, GroundZ))
+            .Physics(Wall(0f, 0f, 30f, 0f, 0f, 4f))
+            .Portal(0xFFFF, new Vector3(0.5f, 1f, 1f), new(0f, 0.5f, 0f), new(1f, 0.5f, 0f), new(1f, 0.5f, 2f), new(0f, 0.5f, 2f)).Build();
+        Action add = () => engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [building]);
+        add.Should().Throw<ArgumentException>().WithMessage("*cell 0xA9B40100*24 m past*").And.ParamName.Should().Be("cells");
+        engine.LandblockCount.Should().Be(0, "a refused landblock is not registered");
+
+        // A dungeon's cell (no way to the outdoors) may reach anywhere: outdoor movers never meet it.
+        CellSurface dungeon = new CellBuilder(0xA9B40100u, new Vector3(190f, 100f, GroundZ - 30f)).Physics(Wall(0f, 0f, 300f, 0f, 0f, 4f)).Build();
+        engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [dungeon]);
+        engine.LandblockCount.Should().Be(1);
+
+        var tree = Objects.ObjectKit.Tree(0.4f, 5f);
+        Action far = () => engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [],
+            [new ObjectSurface(tree.Setup, tree.Parts, Objects.ObjectKit.At(new Vector3(-30f, 50f, GroundZ), 0f), 0)]);
+        far.Should().Throw<ArgumentException>().WithMessage("*object 0x02000001*").And.ParamName.Should().Be("objects");
+        engine.LandblockCount.Should().Be(1, "the landblock registered before stays");
+    }
+}
