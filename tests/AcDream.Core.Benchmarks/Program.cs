@@ -17,6 +17,15 @@ if (args.Contains("--accuracy"))
     return 0;
 }
 
+// `--walk-hash`: the hash of DeterminismWalk's answers, for comparing processes (CI runs it with and
+// without DOTNET_EnableHWIntrinsic=0 and compares).
+if (args.Contains("--walk-hash"))
+{
+    DeterminismWalk.Summary walk = DeterminismWalk.Run(ObjectWorld.GfxObjs());
+    Console.WriteLine($"{walk.Hash:X16} ({walk.Answers} answers: {walk.Slid} slid, {walk.OnObjects} on object floors, {walk.Refused} refused)");
+    return 0;
+}
+
 // BenchmarkDotNet's default toolchain builds a child project for the host's runtime (about 15 s per
 // run). `--in-process` runs the benchmarks in this (Release) process instead, with no child build.
 bool inProcess = args.Contains("--in-process");
