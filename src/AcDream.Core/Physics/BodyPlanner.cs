@@ -17,6 +17,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
     /// landblock (<paramref name="lbX"/>, <paramref name="lbY"/>). False when the mover's landblock is not
     /// loaded (no walls are known: the point move decides).
     /// </summary>
+    [SkipLocalsInit] // the stack buffers are written before they are read
     public bool Plan(ref MoveQuery q, MoverBody body, scoped Span<Vector2> points, ref BodySweep.Path path, out int lbX, out int lbY)
     {
         if (!Locate(ref q.Lands, q.Position, q.CellId, out lbX, out lbY, out Vector2 local, out LandblockEntry? entry))
@@ -25,8 +26,10 @@ internal sealed class BodyPlanner(WorldFrame frame)
         }
 
         float skin = Skin(lbX, lbY, local, q.Delta.Length() + body.Radius);
-        var walls = new WallSet(ref q.Lands, entry, CellIds.IsIndoor(q.CellId));
+        float reach = q.Delta.Length() + body.Radius + skin + PhysicsConstants.ContactTolerance; // every sweep of the slide stays this near the start
+        Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         var move = BodyMove.Of(local, q.Delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height);
+        var walls = new WallSet(ref q.Lands, entry, CellIds.IsIndoor(q.CellId), sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh));
         BodySweep.Slide(in walls, in move, points, ref path);
         return true;
     }
@@ -55,7 +58,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         // move is the point's.
         float grow = body.Radius + Skin(lbX, lbY, local, delta.Length() + body.Radius) + PhysicsConstants.ContactTolerance;
         Vector2 min = Vector2.Min(local, local + delta) - new Vector2(grow), max = Vector2.Max(local, local + delta) + new Vector2(grow);
-        return !new WallSet(ref lands, entry, indoors: false).Any(min, max);
+        return !WallSet.AnyOutdoors(ref lands, entry, min, max);
     }
 
     /// <summary>
@@ -64,6 +67,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
     /// may leave it (the sink, half its skin), metres: above zero it overlaps a wall, and
     /// <paramref name="outward"/> is the unit normal out of the deepest. Zero when its landblock is not loaded.
     /// </summary>
+    [SkipLocalsInit] // the stack buffer is written before it is read
     public float Overlap(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, out Vector2 outward)
     {
         outward = default;
@@ -75,8 +79,11 @@ internal sealed class BodyPlanner(WorldFrame frame)
         float skin = Skin(lbX, lbY, local, body.Radius);
         float radius = body.Radius + skin;
         var hit = WallHit.None;
-        new WallSet(ref q.Lands, entry, CellIds.IsIndoor(cellId))
-            .Sweep(new BodyMove(local, Vector2.Zero, radius, radius, 0.5f * skin, position.Z + q.StepUp, position.Z + body.Height), ref hit);
+        Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
+        float reach = radius + PhysicsConstants.ContactTolerance;
+        var still = new BodyMove(local, Vector2.Zero, radius, radius, 0.5f * skin, position.Z + q.StepUp, position.Z + body.Height);
+        new WallSet(ref q.Lands, entry, CellIds.IsIndoor(cellId), sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), still.ZLow, still.ZHigh))
+            .Sweep(still, ref hit);
         outward = hit.Outward;
         return hit.Depth - (0.5f * skin);
     }

@@ -182,8 +182,6 @@ internal static class BodySweep
     {
         Vector2 p = move.P, d = move.D;
         float radius = move.Radius + widen, graze = move.Graze + widen;
-        ref float t = ref hit.T;
-        ref Vector2 normal = ref hit.Normal;
         Vector2 ab = b - a;
         float lengthSquared = ab.LengthSquared();
         float u0 = lengthSquared > 0f ? Math.Clamp(Vector2.Dot(p - a, ab) / lengthSquared, 0f, 1f) : 0f;
@@ -193,18 +191,18 @@ internal static class BodySweep
         Vector2 n = distanceSquared == 0f ? OffsetNormal(ab, -d)
             : beside ? OffsetNormal(ab, away)      // beside the segment: its own normal, the same at every point (and as the offset lines' below)
             : away / MathF.Sqrt(distanceSquared);  // at an end: the circle's
-        if (distanceSquared < radius * radius && radius - MathF.Sqrt(distanceSquared) > hit.Depth)
+        if (distanceSquared < radius * radius)
         {
-            (hit.Depth, hit.Outward) = (radius - MathF.Sqrt(distanceSquared), n);
+            hit.Overlap(radius - MathF.Sqrt(distanceSquared), n);
         }
 
         float touch = radius + PhysicsConstants.ContactTolerance;
         if (beside && distanceSquared < touch * touch)
         {
             float into = Vector2.Dot(d, n);
-            if (into < 0f && into * into > ParallelTolerance * ParallelTolerance * d.LengthSquared() && t > 0f)
+            if (into < 0f && into * into > ParallelTolerance * ParallelTolerance * d.LengthSquared())
             {
-                (t, normal) = (0f, n);
+                hit.Contact(0f, n);
             }
 
             return;
@@ -235,15 +233,15 @@ internal static class BodySweep
                     (at, u) = s0 - (approach * enter) >= graze ? (enter, u < 0f ? 0f : 1f) : (1f, u);
                 }
 
-                if (at < t && u >= 0f && u <= 1f)
+                if (u >= 0f && u <= 1f)
                 {
-                    (t, normal) = (at, side);
+                    hit.Contact(at, side);
                 }
             }
         }
 
-        SweepPoint(p, d, a, radius, graze, ref t, ref normal);
-        SweepPoint(p, d, b, radius, graze, ref t, ref normal);
+        SweepPoint(p, d, a, radius, graze, ref hit);
+        SweepPoint(p, d, b, radius, graze, ref hit);
     }
 
     /// <summary>
@@ -256,7 +254,7 @@ internal static class BodySweep
     /// A body already sunk into the circle by no more than the sink meets it at the sink's depth; deeper,
     /// where it is, when moving more than <see cref="PhysicsConstants.ContactTolerance"/> deeper.
     /// </summary>
-    private static void SweepPoint(Vector2 p, Vector2 d, Vector2 c, float radius, float graze, ref float t, ref Vector2 normal)
+    private static void SweepPoint(Vector2 p, Vector2 d, Vector2 c, float radius, float graze, ref WallHit hit)
     {
         Vector2 m = p - c;
         float b = Vector2.Dot(m, d);
@@ -287,14 +285,14 @@ internal static class BodySweep
             return;
         }
 
-        float hit = MathF.Max((-b - MathF.Sqrt(discriminant)) / a, 0f);
-        if (hit < t)
+        float t = MathF.Max((-b - MathF.Sqrt(discriminant)) / a, 0f);
+        if (t <= hit.T)
         {
-            Vector2 at = p + (d * hit) - c;
+            Vector2 at = p + (d * t) - c;
             float length = at.Length();
             if (length > 0f)
             {
-                (t, normal) = (hit, at / length);
+                hit.Contact(t, at / length);
             }
         }
     }
@@ -343,7 +341,7 @@ internal static class BodySweep
     /// </summary>
     public static void SweepWalls(CellWalls walls, Vector2 offset, Vector2 lo, Vector2 hi, in BodyMove move, ref WallHit hit)
     {
-        if (walls.Min.X > hi.X || walls.Max.X < lo.X || walls.Min.Y > hi.Y || walls.Max.Y < lo.Y)
+        if (walls.Min.X > hi.X || walls.Max.X < lo.X || walls.Min.Y > hi.Y || walls.Max.Y < lo.Y || walls.ZMax <= move.ZLow || walls.ZMin >= move.ZHigh)
         {
             return;
         }
@@ -430,4 +428,28 @@ internal struct WallHit
 
     /// <summary>No contact and no overlap yet.</summary>
     public static WallHit None => new() { T = 1f };
+
+    /// <summary>
+    /// A contact at fraction <paramref name="t"/> with unit normal <paramref name="normal"/>: kept when earlier
+    /// than the one so far, or as early with a normal that comes first in a fixed order (larger X, then larger
+    /// Y). The nearest contact therefore does not depend on the order in which walls are swept.
+    /// </summary>
+    public void Contact(float t, Vector2 normal)
+    {
+        if (t < T || (t == T && t < 1f && Precedes(normal, Normal)))
+        {
+            (T, Normal) = (t, normal);
+        }
+    }
+
+    /// <summary>An overlap of <paramref name="depth"/> metres at the start, out along <paramref name="outward"/>: kept when deeper (ties as <see cref="Contact"/>).</summary>
+    public void Overlap(float depth, Vector2 outward)
+    {
+        if (depth > Depth || (depth == Depth && depth > 0f && Precedes(outward, Outward)))
+        {
+            (Depth, Outward) = (depth, outward);
+        }
+    }
+
+    private static bool Precedes(Vector2 a, Vector2 b) => a.X > b.X || (a.X == b.X && a.Y > b.Y);
 }

@@ -39,17 +39,21 @@ internal sealed class CellWalls
         {
             Min = new Vector2(float.MaxValue);
             Max = new Vector2(float.MinValue);
+            (ZMin, ZMax) = (float.MaxValue, float.MinValue);
             return;
         }
 
         Vector2 min = polygons[0].Min, max = polygons[0].Max;
+        float zMin = polygons[0].ZMin, zMax = polygons[0].ZMax;
         foreach (WallPolygon w in polygons)
         {
             min = Vector2.Min(min, w.Min);
             max = Vector2.Max(max, w.Max);
+            zMin = MathF.Min(zMin, w.ZMin);
+            zMax = MathF.Max(zMax, w.ZMax);
         }
 
-        (Min, Max) = (min, max);
+        (Min, Max, ZMin, ZMax) = (min, max, zMin, zMax);
     }
 
     public WallPolygon[] Polygons { get; }
@@ -60,6 +64,11 @@ internal sealed class CellWalls
     public Vector2 Min { get; }
 
     public Vector2 Max { get; }
+
+    /// <summary>The lowest and highest Z of all the walls (empty when there are none).</summary>
+    public float ZMin { get; }
+
+    public float ZMax { get; }
 
     /// <summary>
     /// Builds the walls from the placed physics polygons (each with its winding normal), leaving out

@@ -10,19 +10,19 @@ namespace AcDream.Core.Physics;
 /// caller's stack for one call and is passed by reference; reading allocates nothing.
 /// </summary>
 /// <remarks>
-/// It keeps the first <see cref="Capacity"/> landblocks a call reads (a 3 × 3 block: any move of up
-/// to a landblock's length); a call reading more (a swept move longer than that) reads the further
-/// ones afresh each time.
+/// It keeps the 3 × 3 landblocks around the first one the call reads (any move of up to a landblock's
+/// length stays among them); a call reading one farther away (a swept move longer than that) reads it
+/// afresh each time.
 /// </remarks>
 internal struct Neighbourhood
 {
-    /// <summary>How many landblocks one call keeps.</summary>
-    public const int Capacity = 9;
-
     private readonly LandblockRegistry _registry;
     private Entries _entries;
-    private Keys _keys;
-    private int _count;
+    private int _centreX;
+    private int _centreY;
+
+    /// <summary>Bit (dx + 1)·3 + (dy + 1) set once landblock (centre + (dx, dy)) is read; bit 9 once the centre is set.</summary>
+    private int _read;
 
     public Neighbourhood(LandblockRegistry registry) => _registry = registry;
 
@@ -30,16 +30,25 @@ internal struct Neighbourhood
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public LandblockEntry? Get(int x, int y)
     {
-        int key = (x << 16) | (y & 0xFFFF);
-        for (int i = 0; i < _count; i++)
+        if (_read == 0)
         {
-            if (_keys[i] == key)
-            {
-                return _entries[i];
-            }
+            (_centreX, _centreY, _read) = (x, y, 1 << 9); // the first landblock read is the centre
         }
 
-        return Read(x, y, key);
+        uint dx = (uint)(x - _centreX + 1), dy = (uint)(y - _centreY + 1);
+        if (dx > 2 || dy > 2)
+        {
+            return _registry.Get(x, y); // beyond the 3 × 3 block: not kept
+        }
+
+        int slot = (int)((dx * 3) + dy);
+        if ((_read & (1 << slot)) == 0)
+        {
+            _entries[slot] = _registry.Get(x, y);
+            _read |= 1 << slot;
+        }
+
+        return _entries[slot];
     }
 
     /// <summary>
@@ -51,29 +60,10 @@ internal struct Neighbourhood
     /// </summary>
     public static SeamNeighbours Across(ref Neighbourhood lands, LandblockEntry entry, Vector2 lo, Vector2 hi) => new(ref lands, entry, lo, hi);
 
-    /// <summary>The first read of a landblock in this call: kept while there is room.</summary>
-    private LandblockEntry? Read(int x, int y, int key)
-    {
-        LandblockEntry? entry = _registry.Get(x, y);
-        if (_count < Capacity)
-        {
-            _keys[_count] = key;
-            _entries[_count++] = entry;
-        }
-
-        return entry;
-    }
-
-    [InlineArray(Capacity)]
+    [InlineArray(9)]
     private struct Entries
     {
         private LandblockEntry? _first;
-    }
-
-    [InlineArray(Capacity)]
-    private struct Keys
-    {
-        private int _first;
     }
 }
 
@@ -101,6 +91,9 @@ internal ref struct SeamNeighbours
     /// <summary>Its frame's offset from the entry's, metres: a point of its frame is this much more in the entry's.</summary>
     public Vector2 Offset { get; private set; }
 
+    /// <summary>Where it lies: (dx + 1)·3 + (dy + 1) for the neighbour at (dx, dy) from the entry.</summary>
+    public int Slot { get; private set; }
+
     public bool MoveNext()
     {
         const float size = PhysicsConstants.LandblockSize, reach = PhysicsConstants.MaxSeamReach;
@@ -117,7 +110,7 @@ internal ref struct SeamNeighbours
                 continue;
             }
 
-            (Current, Offset) = (neighbour, offset);
+            (Current, Offset, Slot) = (neighbour, offset, _next - 1);
             return true;
         }
 
