@@ -29,7 +29,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         float reach = q.Delta.Length() + body.Radius + skin + PhysicsConstants.ContactTolerance; // every sweep of the slide stays this near the start
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         var move = BodyMove.Of(local, q.Delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height);
-        var walls = new WallSet(ref q.Lands, entry, CellIds.IsIndoor(q.CellId), sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh));
+        var walls = new WallSet(ref q.Lands, entry, CellIndex(entry, q.CellId), sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh));
         BodySweep.Slide(in walls, in move, points, ref path);
         return true;
     }
@@ -82,11 +82,14 @@ internal sealed class BodyPlanner(WorldFrame frame)
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         float reach = radius + PhysicsConstants.ContactTolerance;
         var still = new BodyMove(local, Vector2.Zero, radius, radius, 0.5f * skin, position.Z + q.StepUp, position.Z + body.Height);
-        new WallSet(ref q.Lands, entry, CellIds.IsIndoor(cellId), sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), still.ZLow, still.ZHigh))
+        new WallSet(ref q.Lands, entry, CellIndex(entry, cellId), sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), still.ZLow, still.ZHigh))
             .Sweep(still, ref hit);
         outward = hit.Outward;
         return hit.Depth - (0.5f * skin);
     }
+
+    /// <summary>The index of an indoor cell in its (registered) landblock, or −1 outdoors.</summary>
+    private static int CellIndex(LandblockEntry entry, uint cellId) => CellIds.IsIndoor(cellId) && entry.TryGetCellIndex(cellId, out int index) ? index : -1;
 
     /// <summary>The mover's landblock, its landblock-local position and entry; false when not loaded (or the indoor cell is unknown).</summary>
     private bool Locate(ref Neighbourhood lands, Vector3 position, uint cellId, out int lbX, out int lbY, out Vector2 local, [NotNullWhen(true)] out LandblockEntry? entry)

@@ -341,7 +341,8 @@ internal static class BodySweep
     /// </summary>
     public static void SweepWalls(CellWalls walls, Vector2 offset, Vector2 lo, Vector2 hi, in BodyMove move, ref WallHit hit)
     {
-        if (walls.Min.X > hi.X || walls.Max.X < lo.X || walls.Min.Y > hi.Y || walls.Max.Y < lo.Y || walls.ZMax <= move.ZLow || walls.ZMin >= move.ZHigh)
+        float zLow = move.ZLow, zHigh = move.ZHigh; // locals: the hit written below might alias the move for all the JIT knows
+        if (walls.Min.X > hi.X || walls.Max.X < lo.X || walls.Min.Y > hi.Y || walls.Max.Y < lo.Y || walls.ZMax <= zLow || walls.ZMin >= zHigh)
         {
             return;
         }
@@ -349,7 +350,7 @@ internal static class BodySweep
         ReadOnlySpan<Vector3> vertices = walls.Vertices;
         foreach (ref readonly WallPolygon wall in walls.Polygons.AsSpan())
         {
-            if (wall.ZMax <= move.ZLow || wall.ZMin >= move.ZHigh
+            if (wall.ZMax <= zLow || wall.ZMin >= zHigh
                 || wall.Min.X > hi.X || wall.Max.X < lo.X || wall.Min.Y > hi.Y || wall.Max.Y < lo.Y)
             {
                 continue;

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -113,42 +114,79 @@ internal sealed class BoxGrid
     }
 
     /// <summary>The grid's column of an X (clamped to the grid).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public int Column(float x) => Index(x, _min.X, _inverseSize.X, _columns);
 
     /// <summary>The grid's row of a Y (clamped to the grid).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public int Row(float y) => Index(y, _min.Y, _inverseSize.Y, _rows);
 
     /// <summary>
-    /// Calls <paramref name="visitor"/> once for every box listed over a square of the box
-    /// <paramref name="lo"/>–<paramref name="hi"/> (in order of the squares, column by column), until it
-    /// returns false. A box is a candidate only: the visitor tests it against its own question.
+    /// Every box listed over a square of the box <paramref name="lo"/>–<paramref name="hi"/>, each once (at the
+    /// first such square), in order of the squares, column by column:
+    /// <c>for (var c = grid.Near(lo, hi); c.MoveNext();) use(c.Current);</c>. A box is a candidate only: the
+    /// caller tests it against its own question.
     /// </summary>
-    /// <returns>False when the visitor stopped the query.</returns>
-    public bool Query<T>(Vector2 lo, Vector2 hi, ref T visitor)
-        where T : IBoxVisitor, allows ref struct
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Cursor Near(Vector2 lo, Vector2 hi) => new(this, Column(lo.X), Column(hi.X), Row(lo.Y), Row(hi.Y));
+
+    /// <summary>The enumeration of <see cref="Near"/>: a square's run of items at a time, each box at its first square.</summary>
+    public ref struct Cursor
     {
-        int c0 = Column(lo.X), c1 = Column(hi.X), r0 = Row(lo.Y), r1 = Row(hi.Y);
-        for (int c = c0; c <= c1; c++)
+        private readonly ReadOnlySpan<int> _starts;
+        private readonly ReadOnlySpan<int> _items;
+        private readonly ReadOnlySpan<Rect> _rects;
+        private readonly int _rows, _c0, _c1, _r0, _r1;
+        private int _c, _r, _n, _end;
+
+        internal Cursor(BoxGrid grid, int c0, int c1, int r0, int r1)
         {
-            for (int r = r0; r <= r1; r++)
-            {
-                int k = (c * _rows) + r;
-                for (int n = _starts[k]; n < _starts[k + 1]; n++)
-                {
-                    int item = _items[n];
-                    ref readonly Rect rect = ref _rects[item];
-                    if (c == Math.Max(rect.C0, c0) && r == Math.Max(rect.R0, r0) && !visitor.Visit(item))
-                    {
-                        return false; // seen here first: each box once per query
-                    }
-                }
-            }
+            _starts = grid._starts;
+            _items = grid._items;
+            _rects = grid._rects;
+            (_rows, _c0, _c1, _r0, _r1) = (grid._rows, c0, c1, r0, r1);
+            (_c, _r) = (c0, r0);
+            int k = (c0 * _rows) + r0;
+            (_n, _end) = (_starts[k], _starts[k + 1]);
+            Current = -1;
         }
 
-        return true;
+        /// <summary>The box found: its index in the list the grid was built from.</summary>
+        public int Current { get; private set; }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public bool MoveNext()
+        {
+            while (true)
+            {
+                while (_n < _end)
+                {
+                    int item = _items[_n++];
+                    Rect rect = _rects[item];
+                    if (_c == Math.Max(rect.C0, _c0) && _r == Math.Max(rect.R0, _r0))
+                    {
+                        Current = item; // seen here first: each box once per query
+                        return true;
+                    }
+                }
+
+                if (++_r > _r1)
+                {
+                    (_r, _c) = (_r0, _c + 1);
+                    if (_c > _c1)
+                    {
+                        return false;
+                    }
+                }
+
+                int k = (_c * _rows) + _r;
+                (_n, _end) = (_starts[k], _starts[k + 1]);
+            }
+        }
     }
 
     /// <summary>The column (or row) of a coordinate, clamped to the grid; NaN-safe (a NaN coordinate maps to 0).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static int Index(float coordinate, float min, float inverseSize, int count)
     {
         float f = (coordinate - min) * inverseSize;
@@ -156,15 +194,8 @@ internal sealed class BoxGrid
     }
 
     /// <summary>The squares a box covers: columns C0..C1, rows R0..R1.</summary>
-    private readonly record struct Rect(int C0, int C1, int R0, int R1)
+    internal readonly record struct Rect(int C0, int C1, int R0, int R1)
     {
         public static Rect Empty => new(0, -1, 0, -1);
     }
-}
-
-/// <summary>What a <see cref="BoxGrid"/> query hands each candidate box to.</summary>
-internal interface IBoxVisitor
-{
-    /// <summary>Handles box <paramref name="item"/>; false stops the query.</summary>
-    bool Visit(int item);
 }

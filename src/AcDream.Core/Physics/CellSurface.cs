@@ -148,16 +148,16 @@ public sealed class CellSurface
     /// <summary>The cell's walls for the body effect (every physics polygon that is not a floor or a doorway's cover).</summary>
     internal CellWalls Walls { get; }
 
-    /// <summary>Bounds seen from above (landblock-local metres) of its walls and its objects' walls; empty (min &gt; max) when it has none.</summary>
-    internal (Vector2 Min, Vector2 Max) WallBounds()
+    /// <summary>Bounds (landblock-local metres) of its walls and its objects' walls; empty (min &gt; max) when it has none.</summary>
+    internal WallBounds WallBounds()
     {
-        (Vector2 min, Vector2 max) = (Walls.Min, Walls.Max);
+        var bounds = new WallBounds(Walls.Min, Walls.Max, Walls.ZMin, Walls.ZMax);
         foreach (ObjectSurface o in Objects)
         {
-            (min, max) = (Vector2.Min(min, o.Walls.Min), Vector2.Max(max, o.Walls.Max));
+            bounds = bounds.With(new WallBounds(o.Walls.Min, o.Walls.Max, o.Walls.ZMin, o.Walls.ZMax));
         }
 
-        return (min, max);
+        return bounds;
     }
 
     /// <summary>Prepared portal geometry, aligned with <see cref="Portals"/>.</summary>

@@ -22,6 +22,23 @@ namespace AcDream.Core.Physics;
 internal readonly record struct WallPolygon(int First, int Count, float ZMin, float ZMax, Vector2 Min, Vector2 Max, bool IsUpright, Vector2 A, Vector2 B, float Radius = 0f);
 
 /// <summary>
+/// Bounds of a set of walls, landblock-local metres: seen from above (<see cref="Min"/>–<see cref="Max"/>)
+/// and in height (<see cref="ZMin"/>–<see cref="ZMax"/>); empty (min &gt; max) for none.
+/// </summary>
+internal readonly record struct WallBounds(Vector2 Min, Vector2 Max, float ZMin, float ZMax)
+{
+    /// <summary>These bounds and <paramref name="other"/>'s together.</summary>
+    public WallBounds With(WallBounds other) =>
+        new(Vector2.Min(Min, other.Min), Vector2.Max(Max, other.Max), MathF.Min(ZMin, other.ZMin), MathF.Max(ZMax, other.ZMax));
+
+    /// <summary>Whether they meet <paramref name="box"/> moved by −<paramref name="offset"/> (into their frame): seen from above and in its band.</summary>
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    public bool Meets(in WallBox box, Vector2 offset) =>
+        Min.X <= box.Hi.X - offset.X && Max.X >= box.Lo.X - offset.X && Min.Y <= box.Hi.Y - offset.Y && Max.Y >= box.Lo.Y - offset.Y
+        && ZMax > box.ZLow && ZMin < box.ZHigh;
+}
+
+/// <summary>
 /// The walls of one cell, built once when the cell is: every physics polygon that is not a floor
 /// (walls, ceilings, steep faces), except those that cover one of the cell's own portals (some
 /// doorways carry a solid physics polygon in the opening), in landblock-local metres.

@@ -52,13 +52,15 @@ internal sealed class LandblockEntry
         }
 
         EntryBuckets = BuildBuckets(cells);
-        MetOutdoors = Buildings(PortalTargets);
+        CellGroups = Groups(PortalTargets, out int outdoors);
+        MetOutdoors = Array.ConvertAll(CellGroups, g => g == outdoors);
+        CellWallBounds = Array.ConvertAll(cells, static c => c.WallBounds());
         var cellBoxes = new (Vector2 Min, Vector2 Max)[cells.Length];
         var outdoorCellBoxes = new (Vector2 Min, Vector2 Max)[cells.Length];
         Vector2 min = new(float.MaxValue), max = new(float.MinValue);
         for (int i = 0; i < cells.Length; i++)
         {
-            cellBoxes[i] = cells[i].WallBounds();
+            cellBoxes[i] = (CellWallBounds[i].Min, CellWallBounds[i].Max);
             outdoorCellBoxes[i] = MetOutdoors[i] ? cellBoxes[i] : (new Vector2(float.MaxValue), new Vector2(float.MinValue));
             (min, max) = (Vector2.Min(min, outdoorCellBoxes[i].Min), Vector2.Max(max, outdoorCellBoxes[i].Max));
         }
@@ -105,6 +107,9 @@ internal sealed class LandblockEntry
     /// </summary>
     public int[][] EntryBuckets { get; }
 
+    /// <summary>Per cell, its building: cells joined through portals share a group (the lowest index among them).</summary>
+    public int[] CellGroups { get; }
+
     /// <summary>
     /// Per cell: whether outdoor movers meet its walls: it belongs to a building, a group of cells joined
     /// by portals of which one leads to the outdoors. A dungeon's cells (no way out but by portal objects)
@@ -112,7 +117,10 @@ internal sealed class LandblockEntry
     /// </summary>
     public bool[] MetOutdoors { get; }
 
-    /// <summary>The cells' walls and their objects' walls, by the bounds seen from above (<see cref="CellSurface.WallBounds"/>): what a body indoors meets. Null when no cell has walls.</summary>
+    /// <summary>Per cell, the bounds of its walls and its objects' walls (<see cref="CellSurface.WallBounds"/>), in one array.</summary>
+    public WallBounds[] CellWallBounds { get; }
+
+    /// <summary>The cells' walls and their objects' walls, by their bounds seen from above (<see cref="CellWallBounds"/>): what a body indoors meets. Null when no cell has walls.</summary>
     public BoxGrid? CellWalls { get; }
 
     /// <summary>As <see cref="CellWalls"/>, the cells <see cref="MetOutdoors"/> only: what a body outdoors meets of the cells.</summary>
@@ -194,8 +202,11 @@ internal sealed class LandblockEntry
         return mask;
     }
 
-    /// <summary><see cref="MetOutdoors"/>: every cell joined through portals (either way) to one with a portal to the outdoors.</summary>
-    private static bool[] Buildings(int[][] portalTargets)
+    /// <summary>
+    /// <see cref="CellGroups"/>: cells joined through portals (either way) share a group, numbered by their
+    /// lowest cell index; <paramref name="outdoors"/>: the group of the cells joined to the outdoors (−1 when none).
+    /// </summary>
+    private static int[] Groups(int[][] portalTargets, out int outdoors)
     {
         int n = portalTargets.Length;
         var parent = new int[n + 1]; // n: the outdoors
@@ -211,19 +222,21 @@ internal sealed class LandblockEntry
                 int other = target >= 0 ? target : target == OutdoorTarget ? n : -1;
                 if (other >= 0)
                 {
-                    parent[Root(parent, i)] = Root(parent, other);
+                    int a = Root(parent, i), b = Root(parent, other);
+                    parent[Math.Max(a, b)] = Math.Min(a, b); // the lower index is the root
                 }
             }
         }
 
-        var met = new bool[n];
-        int outdoors = Root(parent, n);
+        var groups = new int[n];
         for (int i = 0; i < n; i++)
         {
-            met[i] = Root(parent, i) == outdoors;
+            groups[i] = Root(parent, i);
         }
 
-        return met;
+        int outside = Root(parent, n);
+        outdoors = outside == n ? -1 : outside;
+        return groups;
 
         static int Root(int[] parent, int i)
         {

@@ -104,8 +104,24 @@ internal static class ObjectGeometry
             return;
         }
 
-        var visit = new PointVisit(entry, p0, p1, h, floors, ref hit);
-        entry.Objects.Query(Vector2.Min(p0, p1), Vector2.Max(p0, p1), ref visit);
+        Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
+        ObjectSurface[] objects = entry.OutdoorObjects;
+        for (BoxGrid.Cursor near = entry.Objects.Near(lo, hi); near.MoveNext();)
+        {
+            int i = near.Current;
+            ref readonly ObjectBox b = ref entry.ObjectBoxes[i];
+            if (b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y && b.ZMin < h && b.ZMax > h
+                && FirstCrossing(objects[i].Walls, p0, p1, lo, hi, h, ref hit.T, ref hit.Normal))
+            {
+                hit.Wall = objects[i];
+            }
+
+            if (floors && p1.X >= b.FloorMin.X && p1.Y >= b.FloorMin.Y && p1.X <= b.FloorMax.X && p1.Y <= b.FloorMax.Y
+                && objects[i].TryFloorBelow(p1.X, p1.Y, h, out float z) && z > hit.GroundZ)
+            {
+                (hit.GroundZ, hit.Floor) = (z, objects[i]);
+            }
+        }
     }
 
     /// <summary>
@@ -141,31 +157,6 @@ internal static class ObjectGeometry
             {
                 return;
             }
-        }
-    }
-
-    /// <summary>One object listed over a point move's squares: the wall it crosses first, the floor under its end.</summary>
-    private ref struct PointVisit(LandblockEntry entry, Vector2 p0, Vector2 p1, float h, bool floors, ref ObjectHit hit) : IBoxVisitor
-    {
-        private readonly Vector2 _lo = Vector2.Min(p0, p1), _hi = Vector2.Max(p0, p1);
-        private ref ObjectHit _hit = ref hit;
-
-        public bool Visit(int i)
-        {
-            ref readonly ObjectBox b = ref entry.ObjectBoxes[i];
-            if (b.WallMin.X <= _hi.X && b.WallMax.X >= _lo.X && b.WallMin.Y <= _hi.Y && b.WallMax.Y >= _lo.Y && b.ZMin < h && b.ZMax > h
-                && FirstCrossing(entry.OutdoorObjects[i].Walls, p0, p1, _lo, _hi, h, ref _hit.T, ref _hit.Normal))
-            {
-                _hit.Wall = entry.OutdoorObjects[i];
-            }
-
-            if (floors && p1.X >= b.FloorMin.X && p1.Y >= b.FloorMin.Y && p1.X <= b.FloorMax.X && p1.Y <= b.FloorMax.Y
-                && entry.OutdoorObjects[i].TryFloorBelow(p1.X, p1.Y, h, out float z) && z > _hit.GroundZ)
-            {
-                (_hit.GroundZ, _hit.Floor) = (z, entry.OutdoorObjects[i]);
-            }
-
-            return true;
         }
     }
 

@@ -359,7 +359,7 @@ public sealed class PhysicsEngine
         {
             if (entry.MetOutdoors[i])
             {
-                Beyond(entry.Cells[i].WallBounds(), $"cell 0x{entry.Cells[i].CellId:X8}'s walls", "cells");
+                Beyond((entry.CellWallBounds[i].Min, entry.CellWallBounds[i].Max), $"cell 0x{entry.Cells[i].CellId:X8}'s walls", "cells");
             }
         }
 

@@ -4,49 +4,77 @@ using System.Runtime.CompilerServices;
 namespace AcDream.Core.Physics;
 
 /// <summary>
-/// The walls around one body move: every cell and object whose walls may meet the box of the call, found
-/// in the landblock's grids (<see cref="LandblockEntry.CellWalls"/>, <see cref="LandblockEntry.Objects"/>) and,
-/// outdoors, in a neighbouring landblock whose reach the box meets across a seam (read through the call's
-/// <see cref="Neighbourhood"/>, so each once). Indoors: the landblock's cells and the objects standing in
-/// them. Outdoors: its buildings' cells and its outdoor objects. The sources are listed once, on the stack;
-/// where more stand near than the list holds, every sweep asks the grids again over its own box instead, so
-/// no wall is ever left out. All in the mover's landblock frame (landblock-local metres); allocation-free.
+/// The walls around one body move, found once per call and listed on the stack. Indoors: the walls of the
+/// mover's cell and of every cell reached from it through portals whose openings meet the call's box (what
+/// the game's cell-by-cell collision sees), with the objects standing in them. Outdoors: those of the
+/// landblock's buildings' cells and outdoor objects whose bounds meet the box and band (its grids:
+/// <see cref="LandblockEntry.OutdoorCellWalls"/>, <see cref="LandblockEntry.Objects"/>), and of a neighbouring
+/// landblock whose reach the box meets across a seam (read through the call's <see cref="Neighbourhood"/>, so
+/// each once). Where more stand near than the list holds, every sweep asks the grids again over its own box
+/// instead (indoors: every cell of the mover's building there, a superset), so no wall is ever left out.
+/// All in the mover's landblock frame (landblock-local metres); allocation-free.
 /// </summary>
 /// <remarks>
 /// Sweeps keep the nearest contact by a rule that does not depend on the order walls are met in
-/// (<see cref="WallHit.Contact"/>), so the list and the grids give the same answers.
+/// (<see cref="WallHit.Contact"/>), so the order of the list does not change an answer.
 /// </remarks>
 internal ref struct WallSet
 {
-    /// <summary>A source's landblock (<c>(dx + 1)·3 + (dy + 1)</c>, 4 for the mover's own) above this bit; below it, its index.</summary>
+    /// <summary>A listed source's landblock (its slot: see <see cref="Own"/>) above this bit; below it, its index.</summary>
     private const int SlotShift = 24;
 
-    /// <summary>Marks a source that is an outdoor object (else a cell).</summary>
+    /// <summary>Marks a listed source that is an outdoor object (else a cell).</summary>
     private const int ObjectBit = 1 << 23;
 
     private readonly ref Neighbourhood _lands;
     private readonly LandblockEntry _entry;
-    private readonly bool _indoors;
-    private readonly Span<int> _sources;
+    private readonly int _cell;
+    private readonly Span<int> _listed;
     private readonly int _count;
 
     /// <summary>
-    /// The walls around a mover in landblock <paramref name="entry"/> (indoors: in one of its cells) whose
-    /// sweeps stay in <paramref name="box"/>, listed in <paramref name="storage"/> (when they fit).
+    /// The walls around a mover in landblock <paramref name="entry"/> (in its cell <paramref name="cellIndex"/>,
+    /// or outdoors: −1) whose sweeps stay in <paramref name="box"/>, listed in <paramref name="storage"/> (when they fit).
     /// </summary>
-    public WallSet(ref Neighbourhood lands, LandblockEntry entry, bool indoors, Span<int> storage, in WallBox box)
+    public WallSet(ref Neighbourhood lands, LandblockEntry entry, int cellIndex, Span<int> storage, in WallBox box)
     {
         _lands = ref lands;
         _entry = entry;
-        _indoors = indoors;
-        _count = -1;
-        var list = new Lister(storage, box);
-        Visit(ref lands, entry, indoors, box.Lo, box.Hi, ref list);
-        if (!list.Full)
+        _cell = cellIndex;
+        var list = new Lister(storage);
+        bool listed = cellIndex >= 0 ? Reach(entry, cellIndex, in box, ref list) : Collect(ref lands, entry, -1, in box, ref list);
+        _count = listed ? list.Count : -1;
+        _listed = storage;
+    }
+
+    /// <summary>
+    /// Indoors: the mover's cell and every cell reached from it through a portal whose bounds meet the box,
+    /// breadth first, into <paramref name="list"/> (which keeps them once); false when they do not fit.
+    /// </summary>
+    private static bool Reach(LandblockEntry entry, int cellIndex, in WallBox box, ref Lister list)
+    {
+        if (!list.Add((Own << SlotShift) | cellIndex))
         {
-            _sources = storage;
-            _count = list.Count;
+            return false;
         }
+
+        for (int i = 0; i < list.Count; i++)
+        {
+            int cell = list[i] & (ObjectBit - 1);
+            ReadOnlySpan<PortalShape> shapes = entry.Cells[cell].PortalShapes;
+            int[] targets = entry.PortalTargets[cell];
+            for (int k = 0; k < shapes.Length; k++)
+            {
+                PortalShape portal = shapes[k];
+                if (targets[k] >= 0 && portal.BoundsMin.X <= box.Hi.X && portal.BoundsMax.X >= box.Lo.X && portal.BoundsMin.Y <= box.Hi.Y && portal.BoundsMax.Y >= box.Lo.Y
+                    && !list.Contains((Own << SlotShift) | targets[k]) && !list.Add((Own << SlotShift) | targets[k]))
+                {
+                    return false;
+                }
+            }
+        }
+
+        return true;
     }
 
     /// <summary>
@@ -58,22 +86,18 @@ internal ref struct WallSet
     {
         float grow = move.Radius + PhysicsConstants.ContactTolerance;
         Vector2 lo = Vector2.Min(move.P, move.P + move.D) - new Vector2(grow), hi = Vector2.Max(move.P, move.P + move.D) + new Vector2(grow);
-        var sweep = new Sweeper(move, hit, lo, hi);
+        var sweep = new Sweeper(ref _lands, _entry, in move, ref hit, lo, hi);
         if (_count < 0)
         {
-            Visit(ref _lands, _entry, _indoors, lo, hi, ref sweep); // more sources than the list holds: the grids, over this sweep's box
-        }
-        else
-        {
-            for (int i = 0; i < _count; i++)
-            {
-                int source = _sources[i], slot = source >> SlotShift;
-                LandblockEntry entry = slot == 4 ? _entry : _lands.Get(_entry.X + (slot / 3) - 1, _entry.Y + (slot % 3) - 1)!;
-                sweep.Source(entry, slot, source & (ObjectBit - 1), (source & ObjectBit) != 0);
-            }
+            // More sources than the list holds: the grids, over this sweep's box and band.
+            Collect(ref _lands, _entry, _cell, new WallBox(lo, hi, move.ZLow, move.ZHigh), ref sweep);
+            return;
         }
 
-        hit = sweep.Hit;
+        for (int i = 0; i < _count; i++)
+        {
+            sweep.Add(_listed[i]);
+        }
     }
 
     /// <summary>
@@ -83,53 +107,59 @@ internal ref struct WallSet
     /// </summary>
     public static bool AnyOutdoors(ref Neighbourhood lands, LandblockEntry entry, Vector2 lo, Vector2 hi)
     {
-        var any = new Lister([], new WallBox(lo, hi, float.NegativeInfinity, float.PositiveInfinity));
-        Visit(ref lands, entry, indoors: false, lo, hi, ref any);
-        return any.Full;
+        var none = new Lister([]);
+        return !Collect(ref lands, entry, -1, new WallBox(lo, hi, float.NegativeInfinity, float.PositiveInfinity), ref none);
     }
-
-    /// <summary>The offset of a source landblock's frame from the mover's (slot as <see cref="SlotShift"/>).</summary>
-    private static Vector2 Offset(int slot) =>
-        new(((slot / 3) - 1) * PhysicsConstants.LandblockSize, ((slot % 3) - 1) * PhysicsConstants.LandblockSize);
 
     /// <summary>
-    /// Hands every cell and object (of landblock <paramref name="entry"/> and, outdoors, of a neighbour whose reach
-    /// meets the box) whose walls may meet the box <paramref name="lo"/>–<paramref name="hi"/> to
-    /// <paramref name="visitor"/>, until it stops.
+    /// Hands every source (a cell, with its objects, or an outdoor object) whose walls meet <paramref name="box"/>
+    /// to <paramref name="sink"/>: indoors (the mover in cell <paramref name="cellIndex"/>), the cells of its
+    /// building; outdoors (−1), the buildings' cells and outdoor objects of <paramref name="entry"/> and of a
+    /// neighbour whose reach meets the box. False when the sink stopped taking them.
     /// </summary>
-    private static void Visit<T>(ref Neighbourhood lands, LandblockEntry entry, bool indoors, Vector2 lo, Vector2 hi, scoped ref T visitor)
-        where T : ISourceVisitor, allows ref struct
+    private static bool Collect<T>(ref Neighbourhood lands, LandblockEntry entry, int cellIndex, in WallBox box, ref T sink)
+        where T : ISourceSink, allows ref struct
     {
-        if (!Visit(entry, 4, indoors, lo, hi, ref visitor) || indoors)
+        if (!Collect(entry, Own, cellIndex, in box, ref sink))
         {
-            return;
+            return false;
         }
 
-        SeamNeighbours across = Neighbourhood.Across(ref lands, entry, lo, hi);
+        if (cellIndex >= 0)
+        {
+            return true;
+        }
+
+        SeamNeighbours across = Neighbourhood.Across(ref lands, entry, box.Lo, box.Hi);
         while (across.MoveNext())
         {
-            if (!Visit(across.Current, across.Slot, indoors, lo, hi, ref visitor))
-            {
-                return;
-            }
-        }
-    }
-
-    /// <summary>One landblock's sources for the box (in the mover's frame); false when the visitor stopped.</summary>
-    private static bool Visit<T>(LandblockEntry entry, int slot, bool indoors, Vector2 lo, Vector2 hi, scoped ref T visitor)
-        where T : ISourceVisitor, allows ref struct
-    {
-        Vector2 offset = Offset(slot);
-        lo -= offset;
-        hi -= offset;
-        if ((indoors ? entry.CellWalls : entry.OutdoorCellWalls) is BoxGrid cellGrid)
-        {
-            var cells = new GridVisit<T>(entry, slot, false, visitor);
-            bool going = cellGrid.Query(lo, hi, ref cells);
-            visitor = cells.Visitor;
-            if (!going)
+            if (!Collect(across.Current, across.Slot, -1, in box, ref sink))
             {
                 return false;
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>One landblock's sources (in slot <paramref name="slot"/>) whose walls meet the box; false when the sink stopped.</summary>
+    private static bool Collect<T>(LandblockEntry entry, int slot, int cellIndex, in WallBox box, ref T sink)
+        where T : ISourceSink, allows ref struct
+    {
+        Vector2 offset = Offset(slot);
+        Vector2 lo = box.Lo - offset, hi = box.Hi - offset;
+        bool indoors = cellIndex >= 0;
+        if ((indoors ? entry.CellWalls : entry.OutdoorCellWalls) is BoxGrid cells)
+        {
+            WallBounds[] bounds = entry.CellWallBounds;
+            int group = indoors ? entry.CellGroups[cellIndex] : -1;
+            for (BoxGrid.Cursor near = cells.Near(lo, hi); near.MoveNext();)
+            {
+                int c = near.Current;
+                if ((!indoors || entry.CellGroups[c] == group) && bounds[c].Meets(in box, offset) && !sink.Add((slot << SlotShift) | c))
+                {
+                    return false;
+                }
             }
         }
 
@@ -138,118 +168,90 @@ internal ref struct WallSet
             return true;
         }
 
-        var objects = new GridVisit<T>(entry, slot, true, visitor);
-        bool more = entry.Objects.Query(lo, hi, ref objects);
-        visitor = objects.Visitor;
-        return more;
+        ObjectBox[] objects = entry.ObjectBoxes;
+        for (BoxGrid.Cursor near = entry.Objects.Near(lo, hi); near.MoveNext();)
+        {
+            ref readonly ObjectBox b = ref objects[near.Current];
+            if (b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y && b.ZMax > box.ZLow && b.ZMin < box.ZHigh
+                && !sink.Add((slot << SlotShift) | ObjectBit | near.Current))
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
-    /// <summary>A grid's box, handed on as a source (a cell, or an outdoor object) of its landblock; the visitor is carried by value and read back.</summary>
-    private ref struct GridVisit<T>(LandblockEntry entry, int slot, bool objects, T visitor) : IBoxVisitor
-        where T : ISourceVisitor, allows ref struct
+    /// <summary>The slot of the mover's own landblock: (dx + 1)·3 + (dy + 1) for the one at (dx, dy) from it.</summary>
+    private const int Own = 4;
+
+    /// <summary>The offset of a slot's landblock frame from the mover's.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector2 Offset(int slot) => slot == Own
+        ? default
+        : new(((slot / 3) - 1) * PhysicsConstants.LandblockSize, ((slot % 3) - 1) * PhysicsConstants.LandblockSize);
+
+    /// <summary>What the sources found are handed to, one encoded source at a time (slot, object bit, index).</summary>
+    private interface ISourceSink
     {
-        public T Visitor = visitor;
-
-        public bool Visit(int item) => Visitor.Source(entry, slot, item, objects);
+        /// <summary>Takes a source; false to stop.</summary>
+        bool Add(int source);
     }
 
-    /// <summary>Lists the sources whose walls meet the box and band in a span; stops (full) when one more does not fit.</summary>
-    private ref struct Lister(Span<int> storage, WallBox box) : ISourceVisitor
+    /// <summary>Lists the sources in a span; stops when one more does not fit.</summary>
+    private ref struct Lister(Span<int> storage) : ISourceSink
     {
         private readonly Span<int> _storage = storage;
 
         public int Count;
 
-        public bool Full;
+        public readonly int this[int i] => _storage[i];
 
-        public bool Source(LandblockEntry entry, int slot, int index, bool isObject)
+        public readonly bool Contains(int source) => _storage[..Count].Contains(source);
+
+        public bool Add(int source)
         {
-            if (!Meets(entry, slot, index, isObject, in box))
-            {
-                return true;
-            }
-
             if (Count == _storage.Length)
             {
-                Full = true;
                 return false;
             }
 
-            _storage[Count++] = (slot << SlotShift) | (isObject ? ObjectBit : 0) | index;
+            _storage[Count++] = source;
             return true;
         }
     }
 
-    /// <summary>Whether a source's walls (or a cell's objects' walls) meet the box and band (the mover's frame).</summary>
-    private static bool Meets(LandblockEntry entry, int slot, int index, bool isObject, in WallBox box)
+    /// <summary>Sweeps a body move against each source's walls (a cell's with its objects', or an outdoor object's).</summary>
+    private ref struct Sweeper(ref Neighbourhood lands, LandblockEntry entry, in BodyMove move, ref WallHit hit, Vector2 lo, Vector2 hi) : ISourceSink
     {
-        Vector2 offset = Offset(slot);
-        Vector2 lo = box.Lo - offset, hi = box.Hi - offset;
-        if (isObject)
+        private readonly ref Neighbourhood _lands = ref lands;
+        private readonly ref readonly BodyMove _move = ref move;
+        private readonly ref WallHit _hit = ref hit;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public bool Add(int source)
         {
-            ref readonly ObjectBox b = ref entry.ObjectBoxes[index];
-            return b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y && b.ZMax > box.ZLow && b.ZMin < box.ZHigh;
-        }
-
-        CellSurface cell = entry.Cells[index];
-        bool meets = Meets(cell.Walls, lo, hi, in box);
-        foreach (ObjectSurface o in cell.Objects)
-        {
-            meets |= Meets(o.Walls, lo, hi, in box);
-        }
-
-        return meets;
-    }
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static bool Meets(CellWalls walls, Vector2 lo, Vector2 hi, in WallBox box) =>
-        walls.Polygons.Length > 0 && walls.Min.X <= hi.X && walls.Max.X >= lo.X && walls.Min.Y <= hi.Y && walls.Max.Y >= lo.Y
-        && walls.ZMax > box.ZLow && walls.ZMin < box.ZHigh;
-
-    /// <summary>Sweeps a body move against the walls of each source.</summary>
-    private struct Sweeper(BodyMove move, WallHit hit, Vector2 lo, Vector2 hi) : ISourceVisitor
-    {
-        private readonly BodyMove _move = move;
-
-        public WallHit Hit = hit;
-
-        public bool Source(LandblockEntry entry, int slot, int index, bool isObject)
-        {
+            int slot = source >> SlotShift, index = source & (ObjectBit - 1);
+            LandblockEntry of = slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
             Vector2 offset = Offset(slot);
             Vector2 boxLo = lo - offset, boxHi = hi - offset;
-            if (isObject)
+            if ((source & ObjectBit) != 0)
             {
-                ref readonly ObjectBox b = ref entry.ObjectBoxes[index];
-                if (!(b.WallMin.X > boxHi.X || b.WallMax.X < boxLo.X || b.WallMin.Y > boxHi.Y || b.WallMax.Y < boxLo.Y))
-                {
-                    BodySweep.SweepWalls(entry.OutdoorObjects[index].Walls, offset, boxLo, boxHi, in _move, ref Hit);
-                }
-
+                BodySweep.SweepWalls(of.OutdoorObjects[index].Walls, offset, boxLo, boxHi, in _move, ref _hit);
                 return true;
             }
 
-            CellSurface cell = entry.Cells[index];
-            BodySweep.SweepWalls(cell.Walls, offset, boxLo, boxHi, in _move, ref Hit);
+            CellSurface cell = of.Cells[index];
+            BodySweep.SweepWalls(cell.Walls, offset, boxLo, boxHi, in _move, ref _hit);
             foreach (ObjectSurface o in cell.Objects)
             {
-                BodySweep.SweepWalls(o.Walls, offset, boxLo, boxHi, in _move, ref Hit);
+                BodySweep.SweepWalls(o.Walls, offset, boxLo, boxHi, in _move, ref _hit);
             }
 
             return true;
         }
     }
-
 }
 
 /// <summary>A box seen from above and a height band, landblock-local metres: where a call's sweeps stay.</summary>
 internal readonly record struct WallBox(Vector2 Lo, Vector2 Hi, float ZLow, float ZHigh);
-
-/// <summary>What <see cref="WallSet"/> hands each cell or outdoor object whose walls may meet a box.</summary>
-internal interface ISourceVisitor
-{
-    /// <summary>
-    /// Handles cell <paramref name="index"/> (or outdoor object, <paramref name="isObject"/>) of
-    /// <paramref name="entry"/>, whose frame is the mover's landblock's offset by the slot's landblock; false stops the visit.
-    /// </summary>
-    bool Source(LandblockEntry entry, int slot, int index, bool isObject);
-}
