@@ -74,14 +74,24 @@ internal ref struct SeamNeighbours
     private readonly LandblockEntry _entry;
     private readonly Vector2 _lo;
     private readonly Vector2 _hi;
-    private int _next;
+    private readonly int _x1, _y0, _y1;
+    private int _dx, _dy;
 
     public SeamNeighbours(ref Neighbourhood lands, LandblockEntry entry, Vector2 lo, Vector2 hi)
     {
         const float size = PhysicsConstants.LandblockSize, reach = PhysicsConstants.MaxSeamReach;
         _lands = ref lands;
         (_entry, _lo, _hi) = (entry, lo, hi);
-        _next = lo.X >= reach && lo.Y >= reach && hi.X <= size - reach && hi.Y <= size - reach ? 9 : 0; // far from every seam: none
+
+        // The neighbours whose squares, grown by the reach, the box meets: dx from −1 or 0 to _x1, dy from _y0 to _y1.
+        int x0 = lo.X < reach ? -1 : 0;
+        (_x1, _y0, _y1) = (hi.X > size - reach ? 1 : 0, lo.Y < reach ? -1 : 0, hi.Y > size - reach ? 1 : 0);
+        (_dx, _dy) = (x0, _y0 - 1);
+        if (x0 == 0 && _x1 == 0 && _y0 == 0 && _y1 == 0)
+        {
+            _dx = 2; // far from every seam: none
+        }
+
         Current = null!;
     }
 
@@ -89,31 +99,35 @@ internal ref struct SeamNeighbours
     public LandblockEntry Current { get; private set; }
 
     /// <summary>Its frame's offset from the entry's, metres: a point of its frame is this much more in the entry's.</summary>
-    public Vector2 Offset { get; private set; }
+    public readonly Vector2 Offset => new(_dx * PhysicsConstants.LandblockSize, _dy * PhysicsConstants.LandblockSize);
 
     /// <summary>Where it lies: (dx + 1)·3 + (dy + 1) for the neighbour at (dx, dy) from the entry.</summary>
-    public int Slot { get; private set; }
+    public readonly int Slot => ((_dx + 1) * 3) + _dy + 1;
 
     public bool MoveNext()
     {
-        const float size = PhysicsConstants.LandblockSize, reach = PhysicsConstants.MaxSeamReach;
-        while (_next < 9)
+        while (true)
         {
-            int dx = (_next / 3) - 1, dy = (_next % 3) - 1;
-            _next++;
-            var offset = new Vector2(dx * size, dy * size);
-            if ((dx | dy) == 0
-                || _lo.X > offset.X + size + reach || _hi.X < offset.X - reach || _lo.Y > offset.Y + size + reach || _hi.Y < offset.Y - reach
-                || _lands.Get(_entry.X + dx, _entry.Y + dy) is not LandblockEntry neighbour
-                || !neighbour.OutdoorsOverlaps(_lo - offset, _hi - offset))
+            if (++_dy > _y1)
+            {
+                (_dx, _dy) = (_dx + 1, _y0);
+                if (_dx > _x1)
+                {
+                    return false;
+                }
+            }
+
+            if ((_dx | _dy) == 0 || _lands.Get(_entry.X + _dx, _entry.Y + _dy) is not LandblockEntry neighbour)
             {
                 continue;
             }
 
-            (Current, Offset, Slot) = (neighbour, offset, _next - 1);
-            return true;
+            Vector2 offset = Offset;
+            if (neighbour.OutdoorsOverlaps(_lo - offset, _hi - offset))
+            {
+                Current = neighbour;
+                return true;
+            }
         }
-
-        return false;
     }
 }

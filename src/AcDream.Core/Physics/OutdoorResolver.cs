@@ -89,16 +89,22 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
         return !(MathF.Min(local.X, end.X) >= reach && MathF.Min(local.Y, end.Y) >= reach && MathF.Max(local.X, end.X) <= far && MathF.Max(local.Y, end.Y) <= far);
     }
 
-    /// <summary>Whether a neighbour's objects or buildings reach the box of the move from <paramref name="local"/> by <paramref name="delta"/> (near a seam).</summary>
+    /// <summary>Whether a neighbour's objects reach the box of the move from <paramref name="local"/> by <paramref name="delta"/> (near a seam).</summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // out of Resolve: only near a seam
     private static bool AnyNeighbourNear(ref Neighbourhood lands, LandblockEntry here, Vector2 local, Vector2 delta)
     {
-        SeamNeighbours across = Neighbourhood.Across(ref lands, here, Vector2.Min(local, local + delta), Vector2.Max(local, local + delta));
-        while (across.MoveNext())
+        const float size = PhysicsConstants.LandblockSize, reach = PhysicsConstants.MaxSeamReach;
+        Vector2 lo = Vector2.Min(local, local + delta), hi = Vector2.Max(local, local + delta);
+        int x0 = lo.X < reach ? -1 : 0, x1 = hi.X > size - reach ? 1 : 0, y0 = lo.Y < reach ? -1 : 0, y1 = hi.Y > size - reach ? 1 : 0;
+        for (int dx = x0; dx <= x1; dx++)
         {
-            if (across.Current.OutdoorObjects.Length > 0)
+            for (int dy = y0; dy <= y1; dy++)
             {
-                return true;
+                var offset = new Vector2(dx * size, dy * size);
+                if ((dx | dy) != 0 && lands.Get(here.X + dx, here.Y + dy) is LandblockEntry n && n.OutdoorObjects.Length > 0 && n.OutdoorsOverlaps(lo - offset, hi - offset))
+                {
+                    return true;
+                }
             }
         }
 
