@@ -82,6 +82,17 @@ public sealed class PlayerMovementMode
     /// <summary>The engine's opt-in effects this mover uses; see <see cref="MovementOptions"/>.</summary>
     public MovementOptions Effects { get; }
 
+    /// <summary>The speed of a run (<see cref="MovementIntent.Run"/>), metres per second.</summary>
+    /// <value><see cref="RunSpeed"/> (4 m/s) by default; up to the game's fastest, 50 m/s.</value>
+    /// <exception cref="ArgumentOutOfRangeException">On set: not finite, not above 0, or above <see cref="MaxFallSpeed"/>.</exception>
+    public float RunMetresPerSecond
+    {
+        get;
+        init => field = float.IsFinite(value) && value > 0f && value <= MaxFallSpeed
+            ? value
+            : throw new ArgumentOutOfRangeException(nameof(RunMetresPerSecond), value, "a run's speed must be finite, above 0 and at most 50 m/s.");
+    } = RunSpeed;
+
     /// <summary>Feet position, world metres.</summary>
     public Vector3 Position { get; private set; }
 
@@ -163,7 +174,7 @@ public sealed class PlayerMovementMode
             move = Vector2.Normalize(move); // diagonal moves are no faster
         }
 
-        Vector2 horizontal = move * ((intent.Run ? RunSpeed : WalkSpeed) * dt);
+        Vector2 horizontal = move * ((intent.Run ? RunMetresPerSecond : WalkSpeed) * dt);
         var delta = new Vector3(horizontal, 0f);
 
         Vector3 position = Position;

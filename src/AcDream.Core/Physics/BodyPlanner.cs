@@ -88,6 +88,38 @@ internal sealed class BodyPlanner(WorldFrame frame)
         return hit.Depth - (0.5f * skin);
     }
 
+    /// <summary>
+    /// Whether the body of <paramref name="q"/> that has stepped up from <paramref name="from"/> to
+    /// <paramref name="position"/> (world; in <paramref name="cellId"/>) met a wall of its new height band on the
+    /// way: the same closed-form sweep as <see cref="Plan"/>, along the step's horizontal move, in the band of the
+    /// feet it stepped up to. Only a body moving into a wall (a lintel, a ceiling the step brought into the band) is
+    /// stopped; one already overlapping a wall moves along or away from it freely, as its planned path did.
+    /// <paramref name="normal"/>: that wall's normal, seen from above. False when its landblock is not loaded.
+    /// </summary>
+    [SkipLocalsInit] // the stack buffer is written before it is read
+    public bool MetInNewBand(ref MoveQuery q, Vector3 from, Vector3 position, uint cellId, out Vector2 normal)
+    {
+        normal = default;
+        MoverBody body = q.Options.Body!.Value;
+        if (!Locate(ref q.Lands, position, cellId, out int lbX, out int lbY, out Vector2 local, out LandblockEntry? entry))
+        {
+            return false;
+        }
+
+        var move = new Vector2(position.X - from.X, position.Y - from.Y);
+        Vector2 start = local - move;
+        float length = move.Length();
+        float skin = Skin(lbX, lbY, start, length + body.Radius);
+        var step = BodyMove.Of(start, move, body.Radius + skin, 0.5f * skin, position.Z + q.StepUp, position.Z + body.Height);
+        float reach = length + step.Radius + PhysicsConstants.ContactTolerance;
+        Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
+        var hit = WallHit.None;
+        new WallSet(ref q.Lands, entry, CellIndex(entry, cellId), sources, new WallBox(start - new Vector2(reach), start + new Vector2(reach), step.ZLow, step.ZHigh))
+            .Sweep(step, ref hit);
+        normal = hit.Normal;
+        return (1f - hit.T) * length > PhysicsConstants.ContactTolerance; // stopped short of where the step went: not a rounding of a contact the path ended at
+    }
+
     /// <summary>The index of an indoor cell in its (registered) landblock, or −1 outdoors.</summary>
     private static int CellIndex(LandblockEntry entry, uint cellId) => CellIds.IsIndoor(cellId) && entry.TryGetCellIndex(cellId, out int index) ? index : -1;
 

@@ -29,12 +29,12 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
         var start = new ResolveResult(q.Position, q.CellId, false);
         if (!planned || path.Contacts == 0)
         {
-            // Free: the point move itself; a swept one aims each sub-step at its point of the path (see Leg).
-            ResolveResult free = planned && q.Options.SweepStepLength is float sweep && q.Delta.LengthSquared() > sweep * sweep
-                ? Leg(ref q, start, points[0], points[1], frame.Origin(lbX, lbY))
-                : point.Move(ref q);
+            // Free: the point move itself; a swept one aims each sub-step at its point of the path (see Leg), and
+            // checks the ceiling after each of its sub-steps, from where that sub-step set out.
+            bool swept = planned && q.Options.SweepStepLength is float sweep && q.Delta.LengthSquared() > sweep * sweep;
+            ResolveResult free = swept ? Leg(ref q, start, points[0], points[1], frame.Origin(lbX, lbY)) : point.Move(ref q);
             // Not planned for a real move: no land under the mover, so no ceiling to check at the end.
-            if (!free.IsRefused && (planned || q.Delta == Vector2.Zero) && LowCeiling(ref q, in free, out Vector3 ceiling))
+            if (!free.IsRefused && !swept && (planned || q.Delta == Vector2.Zero) && LowCeiling(ref q, q.Position, in free, out Vector3 ceiling))
             {
                 return Stopped(ref q, ceiling);
             }
@@ -104,7 +104,7 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
                 return k == 1 ? next : Answers.Continue(result, next);
             }
 
-            if (LowCeiling(ref q, in next, out Vector3 ceiling))
+            if (LowCeiling(ref q, at.Position, in next, out Vector3 ceiling))
             {
                 if (k > 1)
                 {
@@ -122,18 +122,27 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
     }
 
     /// <summary>
-    /// Whether a body that has stepped up to <paramref name="next"/> (its feet above those of the move
-    /// <paramref name="q"/>, where its path was planned) meets a wall or ceiling in its height band there: a
-    /// doorway lower than the body above the floor it would stand on stops it, where the band of the feet it
-    /// set out with let it under the lintel (the player, 1.835 m tall, stepped up into the cottage's 1.8 m
-    /// door cells and stood there with its head in the wall). <paramref name="normal"/>: out of the deepest
-    /// such wall, seen from above.
+    /// Whether a body that has stepped up from <paramref name="from"/> to <paramref name="next"/> (its feet above
+    /// those of the move <paramref name="q"/>, where its path was planned) met a wall or ceiling of its new height
+    /// band on the way (<see cref="BodyPlanner.MetInNewBand"/>): a doorway lower than the body above the floor it
+    /// would stand on stops it, where the band of the feet it set out with let it under the lintel (the player,
+    /// 1.835 m tall, stepped up into the cottage's 1.8 m door cells and stood there with its head in the wall).
+    /// A body already overlapping a wall may step up along or away from it. Lifted in place (no move), any
+    /// overlap of the new band stops it. <paramref name="normal"/>: the wall's, seen from above.
     /// </summary>
-    private bool LowCeiling(ref MoveQuery q, in ResolveResult next, out Vector3 normal)
+    private bool LowCeiling(ref MoveQuery q, Vector3 from, in ResolveResult next, out Vector3 normal)
     {
         normal = default;
-        if (!(next.Position.Z > q.Z + PhysicsConstants.GroundTolerance)
-            || !(planner.Overlap(ref q, next.Position, next.CellId, q.Options.Body!.Value, out Vector2 outward) > 0f))
+        if (!(next.Position.Z > q.Z + PhysicsConstants.GroundTolerance))
+        {
+            return false;
+        }
+
+        Vector2 outward;
+        bool moved = next.Position.X != from.X || next.Position.Y != from.Y;
+        if (!(moved
+            ? planner.MetInNewBand(ref q, from, next.Position, next.CellId, out outward)
+            : planner.Overlap(ref q, next.Position, next.CellId, q.Options.Body!.Value, out outward) > 0f))
         {
             return false;
         }

@@ -175,6 +175,39 @@ internal sealed class PortalShape
     public bool ContainsXY(float x, float y) => Geometry.PolygonContains(_outline, new Vector2(x, y), PhysicsConstants.EdgeTolerance);
 
     /// <summary>
+    /// For a horizontal portal: whether the horizontal move <paramref name="p0"/> → <paramref name="p1"/> passes
+    /// over or under the opening seen from above: an end inside it (edges within
+    /// <see cref="PhysicsConstants.EdgeTolerance"/> counting) or the segment crossing its outline.
+    /// </summary>
+    public bool SegmentTouchesXY(Vector2 p0, Vector2 p1)
+    {
+        if (ContainsXY(p0.X, p0.Y) || ContainsXY(p1.X, p1.Y))
+        {
+            return true;
+        }
+
+        Vector2 d = p1 - p0;
+        for (int i = 0, j = _outline.Length - 1; i < _outline.Length; j = i++)
+        {
+            Vector2 a = _outline[j], e = _outline[i] - a;
+            float denominator = (d.X * e.Y) - (d.Y * e.X);
+            if (denominator == 0f)
+            {
+                continue; // parallel: an end inside, or the crossing of another edge, decides
+            }
+
+            Vector2 w = a - p0;
+            float s = ((w.X * e.Y) - (w.Y * e.X)) / denominator, u = ((w.X * d.Y) - (w.Y * d.X)) / denominator;
+            if (s >= 0f && s <= 1f && u >= 0f && u <= 1f)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>
     /// Whether a physics polygon (landblock-local vertices, <paramref name="centre"/> their mean) covers
     /// this portal: every vertex within <see cref="PhysicsConstants.DoorwayCoverTolerance"/> of the
     /// portal's plane and the centre inside the opening. Such a polygon is the doorway itself, not a wall.

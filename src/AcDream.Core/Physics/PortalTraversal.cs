@@ -60,7 +60,11 @@ internal sealed class PortalTraversal
 
         if (cell.TrySampleGround(q.P1.X, q.P1.Y, q.Z, q.StepUp, out float floorZ))
         {
-            return Landing.OnFloor(hop.Cell, floorZ);
+            // This cell's floor, unless a floor reached up through an opening in its ceiling is nearer the feet
+            // (a mover at the top of a stair steps onto the room's floor beside the opening, not down to the
+            // cellar's floor under it).
+            Landing up = shapes.Length > 1 ? Upward(ref q, hop, shapes, targets) : default;
+            return up.Kind is Arrival.Floor or Arrival.Terrain && MathF.Abs(up.Z - q.Z) < MathF.Abs(floorZ - q.Z) ? up : Landing.OnFloor(hop.Cell, floorZ);
         }
 
         for (int k = 0; k < shapes.Length; k++)
@@ -82,6 +86,12 @@ internal sealed class PortalTraversal
             {
                 return through;
             }
+        }
+
+        Landing upward = Upward(ref q, hop, shapes, targets);
+        if (upward.Kind is Arrival.Floor or Arrival.Terrain)
+        {
+            return upward;
         }
 
         if (hop.Depth == 0 && wallNormal == default)
@@ -108,6 +118,35 @@ internal sealed class PortalTraversal
         }
 
         return Landing.Nothing(wallNormal);
+    }
+
+    /// <summary>
+    /// Through an opening in the ceiling of cell <paramref name="hop"/>.Cell that the move passes under, no more than
+    /// the step above the feet: the mover climbs up through it (a stair rising into the opening, left at its top
+    /// edge onto the floor above, whatever the length of the move). The search goes on above, where the floor
+    /// beside the opening is found, or a further opening (a shaft's) is climbed the same way. Nothing when no such
+    /// opening leads to a floor.
+    /// </summary>
+    private Landing Upward(ref MoveQuery q, Hop hop, ReadOnlySpan<PortalShape> shapes, int[] targets)
+    {
+        for (int k = 0; k < shapes.Length; k++)
+        {
+            PortalShape shape = shapes[k];
+            if (shape.Kind != PortalKind.Horizontal || shape.OutNormal.Z <= 0f || (targets[k] == hop.From && hop.From >= 0)
+                || !shape.SegmentTouchesXY(q.P0, q.P1)
+                || MathF.Min(shape.PlaneZ(q.P0.X, q.P0.Y), shape.PlaneZ(q.P1.X, q.P1.Y)) > q.Z + q.StepUp + PhysicsConstants.EdgeTolerance)
+            {
+                continue;
+            }
+
+            Landing through = Pass(ref q, hop, targets[k], hop.TStart, falling: false);
+            if (through.Kind is Arrival.Floor or Arrival.Terrain)
+            {
+                return through;
+            }
+        }
+
+        return default;
     }
 
     /// <summary>The landing beyond a portal of cell <paramref name="hop"/>.Cell leading to <paramref name="target"/>, crossed at fraction <paramref name="t"/>.</summary>
