@@ -98,7 +98,7 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
         {
             Vector2 target = k == steps ? to : from + (leg * ((float)k / steps));
             MoveQuery query = q.Next(at.Position, at.CellId, target - (new Vector2(at.Position.X, at.Position.Y) - origin));
-            ResolveResult next = point.Step(ref query);
+            ResolveResult next = q.Options.SweepStepLength is null ? point.Step(ref query) : point.SweptStep(ref query);
             if (next.IsRefused)
             {
                 return k == 1 ? next : Answers.Continue(result, next);

@@ -87,6 +87,7 @@ public sealed class CellSurface
         List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> physics = PlacePhysicsPolygons(cell, cellStruct, transform);
         _floors = BuildFloors(physics);
         (Portals, _portalShapes) = BuildPortals(cell, cellId, envCell, cellStruct, transform);
+        HasOpeningAbove = Array.Exists(_portalShapes, static p => p.Kind == PortalKind.Horizontal && p.OutNormal.Z > 0f);
         Walls = CellWalls.Build(cell, physics, _portalShapes, [], nameof(cellStruct));
 
         (FloorMin, FloorMax) = FloorBounds(_floors);
@@ -98,6 +99,7 @@ public sealed class CellSurface
     {
         _floors = cell._floors;
         _portalShapes = cell._portalShapes;
+        HasOpeningAbove = cell.HasOpeningAbove;
         _grid = cell._grid;
         CellId = cell.CellId;
         Origin = cell.Origin;
@@ -159,6 +161,9 @@ public sealed class CellSurface
 
         return bounds;
     }
+
+    /// <summary>Whether one of the cell's portals is an opening in its ceiling (a horizontal portal leading up).</summary>
+    internal bool HasOpeningAbove { get; }
 
     /// <summary>Prepared portal geometry, aligned with <see cref="Portals"/>.</summary>
     internal ReadOnlySpan<PortalShape> PortalShapes => _portalShapes;

@@ -106,6 +106,9 @@ internal readonly struct FloorTriangle
         return true;
     }
 
+    /// <summary>The Z of the triangle's plane at (x, y), anywhere (not clamped, not only over the triangle).</summary>
+    public float PlaneAt(Vector2 p) => PlaneZ + Vector2.Dot(Gradient, p - PlanePoint);
+
     /// <summary>The unit normal of the plane the triangle samples (pointing up).</summary>
     public Vector3 Normal => Vector3.Normalize(new Vector3(-Gradient.X, -Gradient.Y, 1f));
 

@@ -32,14 +32,16 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
         int start = cell.Objects.Length > 0 ? AboveTheCeiling(entry, cellIndex, q.P0, q.Z) : cellIndex;
         Landing landing = portals.FindLanding(ref q, Hop.Start(start));
         if ((cell.Objects.Length > 0 || (landing.Kind == Arrival.Floor && entry.Cells[landing.CellIndex].Objects.Length > 0))
-            && CrossesObjectWall(ref q, cell, landing, out Vector3 wall))
+            && ObjectInTheWay(ref q, cell, landing, out ResolveOutcome why, out Vector3 wall))
         {
-            return Refuse(ref q, cell, ResolveOutcome.Wall, wall);
+            q.ObjectStep = why == ResolveOutcome.StepTooHigh;
+            return Refuse(ref q, cell, why, wall);
         }
 
         switch (landing.Kind)
         {
             case Arrival.Floor or Arrival.Terrain when IsStepTooHigh(cell, q.P0, q.Z, landing.Z, q.StepUp):
+                q.ObjectStep = landing.Kind == Arrival.Floor && entry.Cells[landing.CellIndex].Objects.Length > 0; // a floor among objects may be theirs
                 return Refuse(ref q, cell, ResolveOutcome.StepTooHigh);
             case Arrival.Floor:
                 return Answers.Land(frame.ToWorld(lbX, lbY, q.P1, landing.Z), q.Z, entry.Cells[landing.CellIndex].CellId, in q.Options);
@@ -60,23 +62,24 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
     }
 
     /// <summary>
-    /// Whether the move crosses a wall of an object standing in its start cell or the cell it lands in,
-    /// at the feet plus the step (lower walls are steps); <paramref name="normal"/>: the first one's.
+    /// Whether the move crosses a wall of an object standing in its start cell or the cell it lands in, at the
+    /// feet plus the step (lower walls are steps), or meets one of their floors rising through that height
+    /// (<see cref="ObjectSurface.RisesThrough"/>: <paramref name="why"/> is then a step too high);
+    /// <paramref name="normal"/>: the first one's.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a cell without objects pays nothing for it
-    private static bool CrossesObjectWall(ref MoveQuery q, CellSurface cell, Landing landing, out Vector3 normal)
+    private static bool ObjectInTheWay(ref MoveQuery q, CellSurface cell, Landing landing, out ResolveOutcome why, out Vector3 normal)
     {
-        float t = 2f;
-        normal = default;
-        int hit = -1;
+        var hit = ObjectHit.Over(0f);
         float h = q.Z + q.StepUp;
-        ObjectGeometry.FirstCrossing(cell.Objects, q.P0, q.P1, h, ref t, ref normal, ref hit);
+        ObjectGeometry.FirstCrossing(cell.Objects, q.P0, q.P1, h, ref hit);
         if (landing.Kind == Arrival.Floor && q.Entry.Cells[landing.CellIndex] is { } there && there != cell)
         {
-            ObjectGeometry.FirstCrossing(there.Objects, q.P0, q.P1, h, ref t, ref normal, ref hit);
+            ObjectGeometry.FirstCrossing(there.Objects, q.P0, q.P1, h, ref hit);
         }
 
-        return t <= 1f;
+        (why, normal) = (hit.Rises ? ResolveOutcome.StepTooHigh : ResolveOutcome.Wall, hit.Normal);
+        return hit.T <= 1f;
     }
 
     /// <summary>

@@ -51,6 +51,13 @@ internal ref struct MoveQuery
     /// <summary>Cell visits the portal search may still make (<see cref="PhysicsConstants.MaxCellVisits"/> per call).</summary>
     public int CellVisitsLeft;
 
+    /// <summary>
+    /// Set with a refusal as a step too high that an object's floor caused (a stair's tread or ramp ahead, a
+    /// plinth): such a rise may be the edge of a step, which a shorter move would take (see <see cref="PointMover.Step"/>).
+    /// A rise of the terrain or a cell's floor is not.
+    /// </summary>
+    public bool ObjectStep;
+
     public MoveQuery(ref Neighbourhood lands, Vector3 position, uint cellId, Vector2 delta, float stepUp, ref readonly MovementOptions options)
     {
         Lands = ref lands;

@@ -57,18 +57,19 @@ internal static class ObjectGeometry
     /// <summary>
     /// The first wall of <paramref name="objects"/> that the move <paramref name="p0"/> → <paramref name="p1"/>
     /// crosses at height <paramref name="h"/> (a point mover's feet plus its step: lower walls are steps),
-    /// from either side: fraction <paramref name="t"/> along the move (only crossings before the
-    /// <paramref name="t"/> given count), the wall's horizontal unit normal facing the mover, and the object.
-    /// A move that starts exactly on a wall's line may leave it; one that ends on it has crossed.
+    /// from either side, or floor that rises through that height ahead of it (<see cref="ObjectSurface.RisesThrough"/>),
+    /// into <paramref name="hit"/>: the fraction along the move (only those before <c>hit.T</c> count), the horizontal
+    /// unit normal facing the mover, the object, and whether it is a floor. A move that starts exactly on a wall's
+    /// line may leave it; one that ends on it has crossed.
     /// </summary>
-    public static void FirstCrossing(ReadOnlySpan<ObjectSurface> objects, Vector2 p0, Vector2 p1, float h, ref float t, ref Vector3 normal, ref int objectIndex)
+    public static void FirstCrossing(ReadOnlySpan<ObjectSurface> objects, Vector2 p0, Vector2 p1, float h, ref ObjectHit hit)
     {
         Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
         for (int i = 0; i < objects.Length; i++)
         {
-            if (Crosses(objects[i], p0, p1, lo, hi, h, ref t, ref normal))
+            if (Crosses(objects[i], p0, p1, lo, hi, h, ref hit.T, ref hit.Normal, ref hit.Rises))
             {
-                objectIndex = i;
+                hit.Wall = objects[i];
             }
         }
     }
@@ -78,7 +79,7 @@ internal static class ObjectGeometry
     /// reach over the seam that a point move meets, in one pass over those listed on the squares of each
     /// landblock's fine grid the move's box covers: the first wall the move <paramref name="p0"/> →
     /// <paramref name="p1"/> (landblock-local to <paramref name="entry"/>) crosses at height <paramref name="h"/>,
-    /// as <see cref="FirstCrossing(ReadOnlySpan{ObjectSurface}, Vector2, Vector2, float, ref float, ref Vector3, ref int)"/>;
+    /// as <see cref="FirstCrossing(ReadOnlySpan{ObjectSurface}, Vector2, Vector2, float, ref ObjectHit)"/>;
     /// and, when <paramref name="floors"/>, the ground raised to the highest object floor under
     /// <paramref name="p1"/> no higher than <paramref name="h"/>. Into <paramref name="hit"/>.
     /// </summary>
@@ -110,8 +111,7 @@ internal static class ObjectGeometry
         {
             int i = near.Current;
             ref readonly ObjectBox b = ref entry.ObjectBoxes[i];
-            if (b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y && b.ZMin < h && b.ZMax > h
-                && FirstCrossing(objects[i].Walls, p0, p1, lo, hi, h, ref hit.T, ref hit.Normal))
+            if (b.ZMin < h && b.ZMax > h && Obstructs(objects[i], in b, p0, p1, h, ref hit))
             {
                 hit.Wall = objects[i];
             }
@@ -161,10 +161,42 @@ internal static class ObjectGeometry
     }
 
     /// <summary>Whether the move (box <paramref name="lo"/>–<paramref name="hi"/>) crosses a wall of <paramref name="o"/> at height <paramref name="h"/> before <paramref name="t"/>; the object's bounds reject it first.</summary>
-    private static bool Crosses(ObjectSurface o, Vector2 p0, Vector2 p1, Vector2 lo, Vector2 hi, float h, ref float t, ref Vector3 normal) =>
-        o.BoundsMin.X <= hi.X && o.BoundsMax.X >= lo.X && o.BoundsMin.Y <= hi.Y && o.BoundsMax.Y >= lo.Y
-        && o.BoundsMin.Z < h && o.BoundsMax.Z > h
-        && FirstCrossing(o.Walls, p0, p1, lo, hi, h, ref t, ref normal);
+    private static bool Crosses(ObjectSurface o, Vector2 p0, Vector2 p1, Vector2 lo, Vector2 hi, float h, ref float t, ref Vector3 normal, ref bool rises)
+    {
+        if (!(o.BoundsMin.X <= hi.X && o.BoundsMax.X >= lo.X && o.BoundsMin.Y <= hi.Y && o.BoundsMax.Y >= lo.Y && o.BoundsMin.Z < h && o.BoundsMax.Z > h))
+        {
+            return false;
+        }
+
+        bool met = FirstCrossing(o.Walls, p0, p1, lo, hi, h, ref t, ref normal);
+        rises &= !met;
+        if (o.RisesThrough(p0, p1, lo, hi, h, ref t, ref normal))
+        {
+            (met, rises) = (true, true);
+        }
+
+        return met;
+    }
+
+    /// <summary>
+    /// What of outdoor object <paramref name="o"/> (its box <paramref name="b"/>) the point move meets first at its step
+    /// line <paramref name="h"/>, into <paramref name="hit"/>: a wall it crosses, or a floor rising through the line
+    /// (<see cref="ObjectSurface.RisesThrough"/>). True when it is met before what <paramref name="hit"/> held.
+    /// </summary>
+    private static bool Obstructs(ObjectSurface o, in ObjectBox b, Vector2 p0, Vector2 p1, float h, ref ObjectHit hit)
+    {
+        Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
+        bool met = b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y
+            && FirstCrossing(o.Walls, p0, p1, lo, hi, h, ref hit.T, ref hit.Normal);
+        hit.Rises &= !met;
+        if (b.FloorMin.X <= hi.X && b.FloorMax.X >= lo.X && b.FloorMin.Y <= hi.Y && b.FloorMax.Y >= lo.Y
+            && o.RisesThrough(p0, p1, lo, hi, h, ref hit.T, ref hit.Normal))
+        {
+            (met, hit.Rises) = (true, true);
+        }
+
+        return met;
+    }
 
     private static bool FirstCrossing(CellWalls walls, Vector2 p0, Vector2 p1, Vector2 lo, Vector2 hi, float h, ref float t, ref Vector3 normal)
     {
@@ -290,6 +322,9 @@ internal struct ObjectHit
     public float T;
     public Vector3 Normal;
     public ObjectSurface? Wall;
+
+    /// <summary>Whether what <see cref="Wall"/> met first is one of its floors rising through the step line (a rise too high), not a wall.</summary>
+    public bool Rises;
     public float GroundZ;
     public ObjectSurface? Floor;
 

@@ -216,6 +216,47 @@ public sealed class ObjectSurface
         return found;
     }
 
+    /// <summary>
+    /// Whether a floor of this object rises through height <paramref name="h"/> (a point mover's feet plus its step)
+    /// on the move <paramref name="p0"/> → <paramref name="p1"/> (landblock-local; box <paramref name="lo"/>–<paramref name="hi"/>)
+    /// before fraction <paramref name="t"/>: the move comes from where the floor's plane is at or below that line to
+    /// where it is above it, crossing it within the floor. The mover would pass under a floor (a ramp rising ahead
+    /// of it) that its step line runs into, so it is stopped there as by a rise too high: <paramref name="t"/> is
+    /// where, <paramref name="normal"/> the horizontal unit normal facing the mover (down the slope).
+    /// </summary>
+    internal bool RisesThrough(Vector2 p0, Vector2 p1, Vector2 lo, Vector2 hi, float h, ref float t, ref Vector3 normal)
+    {
+        if (FloorMin.X > hi.X || FloorMax.X < lo.X || FloorMin.Y > hi.Y || FloorMax.Y < lo.Y)
+        {
+            return false;
+        }
+
+        bool rises = false;
+        foreach (ref readonly FloorTriangle triangle in _floors.AsSpan())
+        {
+            if (!(triangle.ZMin <= h && triangle.ZMax > h) || triangle.Min.X > hi.X || triangle.Max.X < lo.X || triangle.Min.Y > hi.Y || triangle.Max.Y < lo.Y)
+            {
+                continue; // wholly below or above the line, or off the move
+            }
+
+            float z0 = triangle.PlaneAt(p0), z1 = triangle.PlaneAt(p1);
+            if (!(z0 <= h && z1 > h))
+            {
+                continue;
+            }
+
+            float at = (h - z0) / (z1 - z0);
+            Vector2 c = p0 + ((p1 - p0) * at);
+            if (at < t && triangle.TrySample(c.X, c.Y, out _))
+            {
+                Vector2 down = -Vector2.Normalize(triangle.Gradient);
+                (t, normal, rises) = (at, new Vector3(down, 0f), true);
+            }
+        }
+
+        return rises;
+    }
+
     /// <summary>The floor triangle's normal at a floor point found by <see cref="TryFloorBelow"/>.</summary>
     internal Vector3 FloorNormal(float x, float y, float z) =>
         CellSurface.TryFloorNormal(_floors, x, y, z, out Vector3 normal) ? normal : Vector3.UnitZ;

@@ -71,6 +71,7 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
             // point no more than the step above the feet, the terrain or an object's, and goes on below.
             if (AmongObjects(ref q, position.Z + q.StepUp, ref groundZ, out onObject, out ResolveOutcome why, out Vector3 wallNormal))
             {
+                q.ObjectStep = why == ResolveOutcome.StepTooHigh;
                 return Refuse(ref q, why, wallNormal);
             }
         }
@@ -134,7 +135,7 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
         }
 
         (groundZ, normal, onObject) = (hit.GroundZ, hit.Normal, hit.Floor is not null);
-        why = hit.Wall is { IsBuilding: true } ? ResolveOutcome.OuterWall : ResolveOutcome.Wall;
+        why = hit.Rises ? ResolveOutcome.StepTooHigh : hit.Wall is { IsBuilding: true } ? ResolveOutcome.OuterWall : ResolveOutcome.Wall;
         return hit.Wall is not null;
     }
 
@@ -169,6 +170,7 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
 
         if (terrainZ - q.Z > q.StepUp && terrainZ - MathF.Max(q.Z, GroundHere(ref q)) > q.StepUp)
         {
+            q.ObjectStep = onObject;
             return Refuse(ref q, ResolveOutcome.StepTooHigh, there.Terrain.NormalUnchecked(q.P1.X, q.P1.Y));
         }
 

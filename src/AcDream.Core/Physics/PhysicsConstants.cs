@@ -30,6 +30,13 @@ public static class PhysicsConstants
     /// </summary>
     public const float SeamSlack = 1f;
 
+    /// <summary>
+    /// Swept moves: how many times a move refused as a step too high at an object's floor is halved to reach the
+    /// step (4: down to a sixteenth of the move, 3 cm of a 0.48 m sub-step), so a mover whose move spans a stair's
+    /// tread and the rise beyond it lands on the tread instead of being refused from the floor before it.
+    /// </summary>
+    public const int MaxClimbHalvings = 4;
+
     /// <summary>Most sub-steps one swept move takes (see <see cref="MovementOptions.SweepStepLength"/>): 65,536; a longer move gets longer sub-steps.</summary>
     public const int MaxSweepSteps = 1 << 16;
 

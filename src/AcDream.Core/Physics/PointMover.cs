@@ -13,9 +13,9 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // Resolve's own path: inlined there, so the call with no body is the code it was
     public ResolveResult Move(ref MoveQuery q)
     {
-        if (q.Options.SweepStepLength is float sweep && q.Delta.LengthSquared() > sweep * sweep)
+        if (q.Options.SweepStepLength is float sweep)
         {
-            return Sweep(ref q, sweep);
+            return q.Delta.LengthSquared() > sweep * sweep ? Sweep(ref q, sweep) : SweptStep(ref q);
         }
 
         return Step(ref q);
@@ -28,11 +28,11 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
         int steps = SubSteps(q.Delta, sweep);
         Vector2 step = q.Delta / steps;
         MoveQuery query = q.Next(q.Position, q.CellId, step);
-        ResolveResult result = Step(ref query);
+        ResolveResult result = SweptStep(ref query);
         for (int i = 1; i < steps && !result.IsRefused; i++)
         {
             query = q.Next(result.Position, result.CellId, step);
-            result = Answers.Continue(result, Step(ref query));
+            result = Answers.Continue(result, SweptStep(ref query));
         }
 
         return result;
@@ -45,4 +45,49 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
     /// <summary>One move, end-point checked.</summary>
     public ResolveResult Step(ref MoveQuery query) =>
         CellIds.IsIndoor(query.CellId) ? indoor.Resolve(ref query) : outdoor.Resolve(ref query);
+
+    /// <summary>
+    /// One sub-step of a swept move (<see cref="MovementOptions.SweepStepLength"/>), end-point checked; refused as a
+    /// step too high that an object's floor caused (<see cref="MoveQuery.ObjectStep"/>: a stair), it is tried again
+    /// in halves (<see cref="Climb"/>), so a mover whose sub-step spans a tread and the rise beyond it takes the
+    /// tread and stops at the rise, as the game's sphere steps up at each riser it meets. Terrain and cells' floors
+    /// are not halved: a slope too steep stays too steep, however short the move.
+    /// </summary>
+    public ResolveResult SweptStep(ref MoveQuery query)
+    {
+        ResolveResult result = Step(ref query);
+        return query.ObjectStep ? Climb(ref query, result, 1) : result;
+    }
+
+    /// <summary>
+    /// A move refused as a step too high at an object's floor (<paramref name="refused"/>), made in two halves, each end-point checked
+    /// (and halved again when refused so, down to 1/2^<see cref="PhysicsConstants.MaxClimbHalvings"/> of the move):
+    /// as far as the halves go, with the refusal of the first that is refused.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Step: only on a refusal
+    private ResolveResult Climb(ref MoveQuery q, ResolveResult refused, int depth)
+    {
+        if (depth > PhysicsConstants.MaxClimbHalvings)
+        {
+            return refused;
+        }
+
+        Vector2 half = q.Delta * 0.5f;
+        MoveQuery first = q.Next(q.Position, q.CellId, half);
+        ResolveResult near = Half(ref first, depth);
+        if (near.IsRefused)
+        {
+            return near;
+        }
+
+        MoveQuery second = q.Next(near.Position, near.CellId, q.Delta - half);
+        return Answers.Continue(near, Half(ref second, depth));
+    }
+
+    /// <summary>One half of a climb: end-point checked, halved again when refused as a step too high at an object's floor.</summary>
+    private ResolveResult Half(ref MoveQuery q, int depth)
+    {
+        ResolveResult result = Step(ref q);
+        return q.ObjectStep ? Climb(ref q, result, depth + 1) : result;
+    }
 }

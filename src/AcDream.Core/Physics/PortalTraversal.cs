@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -63,8 +64,7 @@ internal sealed class PortalTraversal
             // This cell's floor, unless a floor reached up through an opening in its ceiling is nearer the feet
             // (a mover at the top of a stair steps onto the room's floor beside the opening, not down to the
             // cellar's floor under it).
-            Landing up = shapes.Length > 1 ? Upward(ref q, hop, shapes, targets) : default;
-            return up.Kind is Arrival.Floor or Arrival.Terrain && MathF.Abs(up.Z - q.Z) < MathF.Abs(floorZ - q.Z) ? up : Landing.OnFloor(hop.Cell, floorZ);
+            return cell.HasOpeningAbove ? NearerAbove(ref q, hop, floorZ) : Landing.OnFloor(hop.Cell, floorZ);
         }
 
         for (int k = 0; k < shapes.Length; k++)
@@ -88,8 +88,7 @@ internal sealed class PortalTraversal
             }
         }
 
-        Landing upward = Upward(ref q, hop, shapes, targets);
-        if (upward.Kind is Arrival.Floor or Arrival.Terrain)
+        if (cell.HasOpeningAbove && Upward(ref q, hop, shapes, targets) is { Kind: Arrival.Floor or Arrival.Terrain } upward)
         {
             return upward;
         }
@@ -120,6 +119,15 @@ internal sealed class PortalTraversal
         return Landing.Nothing(wallNormal);
     }
 
+    /// <summary>The cell's own floor at <paramref name="floorZ"/>, or the floor reached up through an opening in its ceiling when that is nearer the feet.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // out of the search's common path: only cells with an opening above
+    private Landing NearerAbove(ref MoveQuery q, Hop hop, float floorZ)
+    {
+        LandblockEntry entry = q.Entry;
+        Landing up = Upward(ref q, hop, entry.Cells[hop.Cell].PortalShapes, entry.PortalTargets[hop.Cell]);
+        return up.Kind is Arrival.Floor or Arrival.Terrain && MathF.Abs(up.Z - q.Z) < MathF.Abs(floorZ - q.Z) ? up : Landing.OnFloor(hop.Cell, floorZ);
+    }
+
     /// <summary>
     /// Through an opening in the ceiling of cell <paramref name="hop"/>.Cell that the move passes under, no more than
     /// the step above the feet: the mover climbs up through it (a stair rising into the opening, left at its top
@@ -132,9 +140,12 @@ internal sealed class PortalTraversal
         for (int k = 0; k < shapes.Length; k++)
         {
             PortalShape shape = shapes[k];
-            if (shape.Kind != PortalKind.Horizontal || shape.OutNormal.Z <= 0f || (targets[k] == hop.From && hop.From >= 0)
-                || !shape.SegmentTouchesXY(q.P0, q.P1)
-                || MathF.Min(shape.PlaneZ(q.P0.X, q.P0.Y), shape.PlaneZ(q.P1.X, q.P1.Y)) > q.Z + q.StepUp + PhysicsConstants.EdgeTolerance)
+            float reach = q.Z + q.StepUp + PhysicsConstants.EdgeTolerance;
+            if (shape.Kind != PortalKind.Horizontal || shape.OutNormal.Z <= 0f || (targets[k] == hop.From && hop.From >= 0) || shape.ZMin > reach
+                || shape.BoundsMin.X - PhysicsConstants.EdgeTolerance > MathF.Max(q.P0.X, q.P1.X) || shape.BoundsMax.X + PhysicsConstants.EdgeTolerance < MathF.Min(q.P0.X, q.P1.X)
+                || shape.BoundsMin.Y - PhysicsConstants.EdgeTolerance > MathF.Max(q.P0.Y, q.P1.Y) || shape.BoundsMax.Y + PhysicsConstants.EdgeTolerance < MathF.Min(q.P0.Y, q.P1.Y)
+                || MathF.Min(shape.PlaneZ(q.P0.X, q.P0.Y), shape.PlaneZ(q.P1.X, q.P1.Y)) > reach
+                || !shape.SegmentTouchesXY(q.P0, q.P1))
             {
                 continue;
             }
