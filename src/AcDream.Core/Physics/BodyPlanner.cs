@@ -145,6 +145,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
     /// plus twice the float spacing of the coordinates it may reach, in the world frame and the
     /// landblock's, so rounding the answer to the world frame never puts the body into a wall.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private float Skin(int lbX, int lbY, Vector2 local, float reach)
     {
         Vector2 world = frame.Origin(lbX, lbY) + local;

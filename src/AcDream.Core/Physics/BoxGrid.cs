@@ -8,12 +8,14 @@ namespace AcDream.Core.Physics;
 /// lists the boxes overlapping it, and a query visits every box listed over the squares of its own box
 /// exactly once, however many of them a box spans (it is visited at the first such square). Queries
 /// outside the grid's bounds clamp to its border squares, which list everything beyond them, so no box is
-/// missed. Immutable; queries allocate nothing.
+/// missed; a query whose box misses the union of the boxes visits none. Immutable; queries allocate nothing.
 /// </summary>
 internal sealed class BoxGrid
 {
     private readonly Vector2 _min;
     private readonly Vector2 _inverseSize;
+    private readonly Vector2 _unionMin;
+    private readonly Vector2 _unionMax;
     private readonly int _columns;
     private readonly int _rows;
     private readonly int[] _starts;
@@ -58,14 +60,19 @@ internal sealed class BoxGrid
     private BoxGrid(ReadOnlySpan<(Vector2 Min, Vector2 Max)> boxes, Vector2 min, Vector2 inverseSize, int columns, int rows)
     {
         (_min, _inverseSize, _columns, _rows) = (min, inverseSize, columns, rows);
+        (_unionMin, _unionMax) = (new Vector2(float.MaxValue), new Vector2(float.MinValue));
         _rects = new Rect[boxes.Length];
         _starts = new int[(columns * rows) + 1];
         for (int i = 0; i < boxes.Length; i++)
         {
             (Vector2 lo, Vector2 hi) = boxes[i];
-            _rects[i] = lo.X <= hi.X && lo.Y <= hi.Y
-                ? new Rect(Column(lo.X), Column(hi.X), Row(lo.Y), Row(hi.Y))
-                : Rect.Empty;
+            _rects[i] = Rect.Empty;
+            if (lo.X <= hi.X && lo.Y <= hi.Y)
+            {
+                _rects[i] = new Rect(Column(lo.X), Column(hi.X), Row(lo.Y), Row(hi.Y));
+                (_unionMin, _unionMax) = (Vector2.Min(_unionMin, lo), Vector2.Max(_unionMax, hi));
+            }
+
             for (int c = _rects[i].C0; c <= _rects[i].C1; c++)
             {
                 for (int r = _rects[i].R0; r <= _rects[i].R1; r++)
@@ -100,6 +107,11 @@ internal sealed class BoxGrid
     /// <summary>Whether any box is listed over a square of the box <paramref name="lo"/>–<paramref name="hi"/>: false is certain.</summary>
     public bool ListsAny(Vector2 lo, Vector2 hi)
     {
+        if (!MeetsUnion(lo, hi))
+        {
+            return false;
+        }
+
         int c0 = Column(lo.X), c1 = Column(hi.X), r0 = Row(lo.Y), r1 = Row(hi.Y);
         for (int c = c0; c <= c1; c++)
         {
@@ -128,9 +140,14 @@ internal sealed class BoxGrid
     /// caller tests it against its own question.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Cursor Near(Vector2 lo, Vector2 hi) => new(this, Column(lo.X), Column(hi.X), Row(lo.Y), Row(hi.Y));
+    public Cursor Near(Vector2 lo, Vector2 hi) => MeetsUnion(lo, hi) ? new(this, Column(lo.X), Column(hi.X), Row(lo.Y), Row(hi.Y)) : default;
 
-    /// <summary>The enumeration of <see cref="Near"/>: a square's run of items at a time, each box at its first square.</summary>
+    /// <summary>Whether the box <paramref name="lo"/>–<paramref name="hi"/> meets the union of the listed boxes (false for a NaN box).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private bool MeetsUnion(Vector2 lo, Vector2 hi) =>
+        lo.X <= _unionMax.X && hi.X >= _unionMin.X && lo.Y <= _unionMax.Y && hi.Y >= _unionMin.Y;
+
+    /// <summary>The enumeration of <see cref="Near"/>: a square's run of items at a time, each box at its first square (the default visits none).</summary>
     public ref struct Cursor
     {
         private readonly ReadOnlySpan<int> _starts;
@@ -139,6 +156,7 @@ internal sealed class BoxGrid
         private readonly int _rows, _c0, _c1, _r0, _r1;
         private int _c, _r, _n, _end;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal Cursor(BoxGrid grid, int c0, int c1, int r0, int r1)
         {
             _starts = grid._starts;

@@ -51,12 +51,16 @@ internal struct Neighbourhood
         return _entries[slot];
     }
 
+    /// <summary>How far the things of the neighbours of <paramref name="entry"/> (read by this call) may reach into it (<see cref="LandblockRegistry.ReachInto"/>).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly SeamReach ReachInto(LandblockEntry entry) => _registry.ReachInto(entry.X, entry.Y);
+
     /// <summary>
     /// The landblocks next to <paramref name="entry"/> whose outdoor objects or building walls
     /// (<see cref="LandblockEntry.OutdoorMin"/>–<see cref="LandblockEntry.OutdoorMax"/>) meet the box
     /// <paramref name="lo"/>–<paramref name="hi"/> (<paramref name="entry"/>'s frame), each with the offset of its
-    /// frame from <paramref name="entry"/>'s. A box farther than <see cref="PhysicsConstants.MaxSeamReach"/> from
-    /// every seam reads none.
+    /// frame from <paramref name="entry"/>'s. A box out of every neighbour's reach
+    /// (<see cref="ReachInto"/>) reads none.
     /// </summary>
     public static SeamNeighbours Across(ref Neighbourhood lands, LandblockEntry entry, Vector2 lo, Vector2 hi) => new(ref lands, entry, lo, hi);
 
@@ -79,13 +83,14 @@ internal ref struct SeamNeighbours
 
     public SeamNeighbours(ref Neighbourhood lands, LandblockEntry entry, Vector2 lo, Vector2 hi)
     {
-        const float size = PhysicsConstants.LandblockSize, reach = PhysicsConstants.MaxSeamReach;
+        const float size = PhysicsConstants.LandblockSize;
         _lands = ref lands;
         (_entry, _lo, _hi) = (entry, lo, hi);
 
-        // The neighbours whose squares, grown by the reach, the box meets: dx from −1 or 0 to _x1, dy from _y0 to _y1.
-        int x0 = lo.X < reach ? -1 : 0;
-        (_x1, _y0, _y1) = (hi.X > size - reach ? 1 : 0, lo.Y < reach ? -1 : 0, hi.Y > size - reach ? 1 : 0);
+        // The neighbours whose reach into the entry the box meets: dx from −1 or 0 to _x1, dy from _y0 to _y1.
+        SeamReach reach = lands.ReachInto(entry);
+        int x0 = lo.X < reach.West ? -1 : 0;
+        (_x1, _y0, _y1) = (hi.X > size - reach.East ? 1 : 0, lo.Y < reach.South ? -1 : 0, hi.Y > size - reach.North ? 1 : 0);
         (_dx, _dy) = (x0, _y0 - 1);
         if (x0 == 0 && _x1 == 0 && _y0 == 0 && _y1 == 0)
         {

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -77,28 +78,40 @@ internal static class ObjectGeometry
     /// <summary>
     /// The objects standing outdoors in <paramref name="entry"/>'s landblock and in a neighbour whose objects
     /// reach over the seam that a point move meets, in one pass over those listed on the squares of each
-    /// landblock's fine grid the move's box covers: the first wall the move <paramref name="p0"/> →
-    /// <paramref name="p1"/> (landblock-local to <paramref name="entry"/>) crosses at height <paramref name="h"/>,
-    /// as <see cref="FirstCrossing(ReadOnlySpan{ObjectSurface}, Vector2, Vector2, float, ref ObjectHit)"/>;
-    /// and, when <paramref name="floors"/>, the ground raised to the highest object floor under
-    /// <paramref name="p1"/> no higher than <paramref name="h"/>. Into <paramref name="hit"/>.
+    /// landblock's fine grid the move's box covers: when <paramref name="walls"/>, the first wall the move
+    /// <paramref name="p0"/> → <paramref name="p1"/> (landblock-local to <paramref name="entry"/>) crosses at height
+    /// <paramref name="h"/>, as <see cref="FirstCrossing(ReadOnlySpan{ObjectSurface}, Vector2, Vector2, float, ref ObjectHit)"/>;
+    /// when <paramref name="floors"/>, the ground raised to the highest object floor under <paramref name="p1"/> no
+    /// higher than <paramref name="h"/>, and whether an object may have a floor there above it
+    /// (<see cref="ObjectHit.FloorAbove"/>). Into <paramref name="hit"/>.
     /// </summary>
-    public static void AmongOutdoors(ref Neighbourhood lands, LandblockEntry entry, Vector2 p0, Vector2 p1, float h, bool floors, ref ObjectHit hit)
+    public static void AmongOutdoors(ref Neighbourhood lands, LandblockEntry entry, Vector2 p0, Vector2 p1, float h, bool walls, bool floors, ref ObjectHit hit)
     {
-        AmongOutdoors(entry, p0, p1, h, floors, ref hit);
+        AmongOutdoors(entry, p0, p1, h, walls, floors, ref hit);
+        Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
+        if (lands.ReachInto(entry).Meets(lo, hi))
+        {
+            AcrossSeams(ref lands, entry, p0, p1, h, walls, floors, ref hit);
+        }
+    }
+
+    /// <summary><see cref="AmongOutdoors(ref Neighbourhood, LandblockEntry, Vector2, Vector2, float, bool, bool, ref ObjectHit)"/> in the neighbours whose objects reach the move.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only within a neighbour's reach
+    private static void AcrossSeams(ref Neighbourhood lands, LandblockEntry entry, Vector2 p0, Vector2 p1, float h, bool walls, bool floors, ref ObjectHit hit)
+    {
         SeamNeighbours across = Neighbourhood.Across(ref lands, entry, Vector2.Min(p0, p1), Vector2.Max(p0, p1));
         while (across.MoveNext())
         {
-            AmongOutdoors(across.Current, p0 - across.Offset, p1 - across.Offset, h, floors, ref hit);
+            AmongOutdoors(across.Current, p0 - across.Offset, p1 - across.Offset, h, walls, floors, ref hit);
         }
     }
 
     /// <summary>
-    /// As <see cref="AmongOutdoors(ref Neighbourhood, LandblockEntry, Vector2, Vector2, float, bool, ref ObjectHit)"/>,
+    /// As <see cref="AmongOutdoors(ref Neighbourhood, LandblockEntry, Vector2, Vector2, float, bool, bool, ref ObjectHit)"/>,
     /// the objects of one landblock (the move in its frame). The objects' boxes (<see cref="LandblockEntry.ObjectBoxes"/>)
     /// reject them first, so only an object in reach is read.
     /// </summary>
-    public static void AmongOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1, float h, bool floors, ref ObjectHit hit)
+    public static void AmongOutdoors(LandblockEntry entry, Vector2 p0, Vector2 p1, float h, bool walls, bool floors, ref ObjectHit hit)
     {
         if (entry.OutdoorObjects.Length == 0)
         {
@@ -111,15 +124,18 @@ internal static class ObjectGeometry
         {
             int i = near.Current;
             ref readonly ObjectBox b = ref entry.ObjectBoxes[i];
-            if (b.ZMin < h && b.ZMax > h && Obstructs(objects[i], in b, p0, p1, h, ref hit))
+            if (walls && b.ZMin < h && b.ZMax > h && Obstructs(objects[i], in b, p0, p1, h, ref hit))
             {
                 hit.Wall = objects[i];
             }
 
-            if (floors && p1.X >= b.FloorMin.X && p1.Y >= b.FloorMin.Y && p1.X <= b.FloorMax.X && p1.Y <= b.FloorMax.Y
-                && objects[i].TryFloorBelow(p1.X, p1.Y, h, out float z) && z > hit.GroundZ)
+            if (floors && p1.X >= b.FloorMin.X && p1.Y >= b.FloorMin.Y && p1.X <= b.FloorMax.X && p1.Y <= b.FloorMax.Y)
             {
-                (hit.GroundZ, hit.Floor) = (z, objects[i]);
+                hit.FloorAbove |= b.ZMax > h;
+                if (objects[i].TryFloorBelow(p1.X, p1.Y, h, out float z) && z > hit.GroundZ)
+                {
+                    (hit.GroundZ, hit.Floor) = (z, objects[i]);
+                }
             }
         }
     }
@@ -134,25 +150,27 @@ internal static class ObjectGeometry
     public static ObjectHit GroundOutdoors(ref Neighbourhood lands, LandblockEntry entry, Vector2 p, float feetZ, float stepUp, float terrainZ)
     {
         var hit = ObjectHit.Over(terrainZ);
-        AmongOutdoors(ref lands, entry, p, p, feetZ + stepUp, floors: true, ref hit);
+        AmongOutdoors(ref lands, entry, p, p, feetZ + stepUp, walls: false, floors: true, ref hit);
         RaiseToRest(ref lands, entry, p, feetZ, stepUp, ref hit);
         return hit;
     }
 
     /// <summary>
-    /// Outdoors, after a first pass at the feet plus the step: the ground of <paramref name="hit"/> (at
+    /// Outdoors, after a first pass for floors at the feet plus the step: the ground of <paramref name="hit"/> (at
     /// <paramref name="p"/>) raised on from where it stands, when that is above the feet (a mover that climbed
-    /// the terrain or a step reaches a floor higher than the feet plus the step), until no floor within a step
-    /// of it is higher: what makes standing still on the answer give the answer again.
+    /// the terrain or a step reaches a floor higher than the feet plus the step) and an object may have a floor
+    /// above (<see cref="ObjectHit.FloorAbove"/>), until no floor within a step of it is higher: what makes standing
+    /// still on the answer give the answer again.
     /// </summary>
     public static void RaiseToRest(ref Neighbourhood lands, LandblockEntry entry, Vector2 p, float feetZ, float stepUp, ref ObjectHit hit)
     {
         float ceiling = feetZ + stepUp;
-        while (hit.GroundZ > feetZ && hit.GroundZ + stepUp > ceiling)
+        while (hit.FloorAbove && hit.GroundZ > feetZ && hit.GroundZ + stepUp > ceiling)
         {
             ceiling = hit.GroundZ + stepUp;
             float ground = hit.GroundZ;
-            AmongOutdoors(ref lands, entry, p, p, ceiling, floors: true, ref hit);
+            hit.FloorAbove = false;
+            AmongOutdoors(ref lands, entry, p, p, ceiling, walls: false, floors: true, ref hit);
             if (hit.GroundZ == ground)
             {
                 return;
@@ -183,6 +201,7 @@ internal static class ObjectGeometry
     /// line <paramref name="h"/>, into <paramref name="hit"/>: a wall it crosses, or a floor rising through the line
     /// (<see cref="ObjectSurface.RisesThrough"/>). True when it is met before what <paramref name="hit"/> held.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static bool Obstructs(ObjectSurface o, in ObjectBox b, Vector2 p0, Vector2 p1, float h, ref ObjectHit hit)
     {
         Vector2 lo = Vector2.Min(p0, p1), hi = Vector2.Max(p0, p1);
@@ -317,7 +336,7 @@ internal static class ObjectGeometry
 /// the ground under its end raised to the highest object floor within reach (<see cref="GroundZ"/>,
 /// <see cref="Floor"/>: null when no object's floor raised it).
 /// </summary>
-internal struct ObjectHit
+internal ref struct ObjectHit
 {
     public float T;
     public Vector3 Normal;
@@ -327,6 +346,9 @@ internal struct ObjectHit
     public bool Rises;
     public float GroundZ;
     public ObjectSurface? Floor;
+
+    /// <summary>Whether an object whose floors' bounds hold the end point reaches above the height a floors pass looked up to: a higher floor may be there.</summary>
+    public bool FloorAbove;
 
     /// <summary>Nothing met yet, over ground at <paramref name="groundZ"/>.</summary>
     public static ObjectHit Over(float groundZ) => new() { T = 2f, GroundZ = groundZ };

@@ -43,9 +43,8 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
 
         // Objects are looked at only when the bit of the mover's cell is set (an object is listed on a
         // fine-grid square of the cell or within one square of it), or a move reaching ObjectCellReach
-        // or more along an axis has one listed over the squares of its box, or the move comes within a
-        // neighbour's reach of a seam (MaxSeamReach) and that neighbour's objects or buildings reach its
-        // box, or it crosses into another landblock: a move away from every object takes the path of a
+        // or more along an axis has one listed over the squares of its box, or the move comes within the
+        // reach of a neighbour's objects (SeamReach) and they reach its box, or it crosses into another landblock: a move away from every object takes the path of a
         // landblock without objects, with the same answer.
         bool objectsNear = (here.ObjectCells & (1UL << (int)((hereCellId & 0xFFFF) - 1))) != 0
             || (!(MathF.Abs(delta.X) < LandblockEntry.ObjectCellReach && MathF.Abs(delta.Y) < LandblockEntry.ObjectCellReach)
@@ -64,7 +63,8 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
         q.P1 = candidate;
         float groundZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
         bool onObject = false;
-        if (objectsNear || there != here || (NearSeam(local, delta) && AnyNeighbourNear(ref q.Lands, here, local, delta)))
+        Vector2 lo = Vector2.Min(local, local + delta), hi = Vector2.Max(local, local + delta);
+        if (objectsNear || there != here || (q.Lands.ReachInto(here).Meets(lo, hi) && AnyNeighbourNear(ref q.Lands, here, lo, hi)))
         {
             // Among objects: refused at the first object wall the move crosses at the feet plus the step
             // (a shell's is the building's outer wall); else it ends on the highest floor under the end
@@ -81,31 +81,16 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
             : WalkTerrain(ref q, groundZ, onObject);
     }
 
-    /// <summary>Whether the move's box (from <paramref name="local"/> by <paramref name="delta"/>) comes within <see cref="PhysicsConstants.MaxSeamReach"/> of a seam of its landblock.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static bool NearSeam(Vector2 local, Vector2 delta)
+    /// <summary>Whether a neighbour's outdoor objects meet the box <paramref name="lo"/>–<paramref name="hi"/> (of <paramref name="here"/>'s frame).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // out of Resolve: only within a neighbour's reach
+    private static bool AnyNeighbourNear(ref Neighbourhood lands, LandblockEntry here, Vector2 lo, Vector2 hi)
     {
-        const float reach = PhysicsConstants.MaxSeamReach, far = PhysicsConstants.LandblockSize - PhysicsConstants.MaxSeamReach;
-        Vector2 end = local + delta;
-        return !(MathF.Min(local.X, end.X) >= reach && MathF.Min(local.Y, end.Y) >= reach && MathF.Max(local.X, end.X) <= far && MathF.Max(local.Y, end.Y) <= far);
-    }
-
-    /// <summary>Whether a neighbour's objects reach the box of the move from <paramref name="local"/> by <paramref name="delta"/> (near a seam).</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // out of Resolve: only near a seam
-    private static bool AnyNeighbourNear(ref Neighbourhood lands, LandblockEntry here, Vector2 local, Vector2 delta)
-    {
-        const float size = PhysicsConstants.LandblockSize, reach = PhysicsConstants.MaxSeamReach;
-        Vector2 lo = Vector2.Min(local, local + delta), hi = Vector2.Max(local, local + delta);
-        int x0 = lo.X < reach ? -1 : 0, x1 = hi.X > size - reach ? 1 : 0, y0 = lo.Y < reach ? -1 : 0, y1 = hi.Y > size - reach ? 1 : 0;
-        for (int dx = x0; dx <= x1; dx++)
+        SeamNeighbours across = Neighbourhood.Across(ref lands, here, lo, hi);
+        while (across.MoveNext())
         {
-            for (int dy = y0; dy <= y1; dy++)
+            if (across.Current.OutdoorObjects.Length > 0)
             {
-                var offset = new Vector2(dx * size, dy * size);
-                if ((dx | dy) != 0 && lands.Get(here.X + dx, here.Y + dy) is LandblockEntry n && n.OutdoorObjects.Length > 0 && n.OutdoorsOverlaps(lo - offset, hi - offset))
-                {
-                    return true;
-                }
+                return true;
             }
         }
 
@@ -123,10 +108,10 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
     private static bool AmongObjects(ref MoveQuery q, float h, ref float groundZ, out bool onObject, out ResolveOutcome why, out Vector3 normal)
     {
         var hit = ObjectHit.Over(groundZ);
-        ObjectGeometry.AmongOutdoors(ref q.Lands, q.Entry, q.P0, q.P1, h, floors: true, ref hit);
+        ObjectGeometry.AmongOutdoors(ref q.Lands, q.Entry, q.P0, q.P1, h, walls: true, floors: true, ref hit);
         if (q.Here != q.Entry)
         {
-            ObjectGeometry.AmongOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Stand.Local + q.Delta, h, floors: false, ref hit);
+            ObjectGeometry.AmongOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Stand.Local + q.Delta, h, walls: true, floors: false, ref hit);
         }
 
         if (hit.Wall is null)

@@ -125,11 +125,14 @@ internal ref struct WallSet
             return false;
         }
 
-        if (cellIndex >= 0)
-        {
-            return true;
-        }
+        return cellIndex >= 0 || !lands.ReachInto(entry).Meets(box.Lo, box.Hi) || CollectAcross(ref lands, entry, in box, ref sink);
+    }
 
+    /// <summary>The sources of the neighbours of <paramref name="entry"/> whose reach meets the box; false when the sink stopped.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only within a neighbour's reach
+    private static bool CollectAcross<T>(ref Neighbourhood lands, LandblockEntry entry, in WallBox box, ref T sink)
+        where T : ISourceSink, allows ref struct
+    {
         SeamNeighbours across = Neighbourhood.Across(ref lands, entry, box.Lo, box.Hi);
         while (across.MoveNext())
         {
