@@ -20,7 +20,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
     [SkipLocalsInit] // the stack buffers are written before they are read
     public bool Plan(ref MoveQuery q, MoverBody body, scoped Span<Vector2> points, ref BodySweep.Path path, out int lbX, out int lbY)
     {
-        if (!Locate(ref q.Lands, q.Position, q.CellId, out lbX, out lbY, out Vector2 local, out LandblockEntry? entry))
+        if (!Locate(ref q.Lands, q.Position, q.CellId, out lbX, out lbY, out Vector2 local, out LandblockEntry? entry, out int cellIndex))
         {
             return false;
         }
@@ -29,7 +29,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         float reach = q.Delta.Length() + body.Radius + skin + PhysicsConstants.ContactTolerance; // every sweep of the slide stays this near the start
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         var move = BodyMove.Of(local, q.Delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height);
-        var walls = new WallSet(ref q.Lands, entry, CellIndex(entry, q.CellId), sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh));
+        var walls = new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh));
         BodySweep.Slide(in walls, in move, points, ref path);
         return true;
     }
@@ -71,7 +71,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
     public float Overlap(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, out Vector2 outward)
     {
         outward = default;
-        if (!Locate(ref q.Lands, position, cellId, out int lbX, out int lbY, out Vector2 local, out LandblockEntry? entry))
+        if (!Locate(ref q.Lands, position, cellId, out int lbX, out int lbY, out Vector2 local, out LandblockEntry? entry, out int cellIndex))
         {
             return 0f;
         }
@@ -82,7 +82,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         float reach = radius + PhysicsConstants.ContactTolerance;
         var still = new BodyMove(local, Vector2.Zero, radius, radius, 0.5f * skin, position.Z + q.StepUp, position.Z + body.Height);
-        new WallSet(ref q.Lands, entry, CellIndex(entry, cellId), sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), still.ZLow, still.ZHigh))
+        new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), still.ZLow, still.ZHigh))
             .Sweep(still, ref hit);
         outward = hit.Outward;
         return hit.Depth - (0.5f * skin);
@@ -101,7 +101,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
     {
         normal = default;
         MoverBody body = q.Options.Body!.Value;
-        if (!Locate(ref q.Lands, position, cellId, out int lbX, out int lbY, out Vector2 local, out LandblockEntry? entry))
+        if (!Locate(ref q.Lands, position, cellId, out int lbX, out int lbY, out Vector2 local, out LandblockEntry? entry, out int cellIndex))
         {
             return false;
         }
@@ -114,18 +114,19 @@ internal sealed class BodyPlanner(WorldFrame frame)
         float reach = length + step.Radius + PhysicsConstants.ContactTolerance;
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         var hit = WallHit.None;
-        new WallSet(ref q.Lands, entry, CellIndex(entry, cellId), sources, new WallBox(start - new Vector2(reach), start + new Vector2(reach), step.ZLow, step.ZHigh))
+        new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(start - new Vector2(reach), start + new Vector2(reach), step.ZLow, step.ZHigh))
             .Sweep(step, ref hit);
         normal = hit.Normal;
         return (1f - hit.T) * length > PhysicsConstants.ContactTolerance; // stopped short of where the step went: not a rounding of a contact the path ended at
     }
 
-    /// <summary>The index of an indoor cell in its (registered) landblock, or −1 outdoors.</summary>
-    private static int CellIndex(LandblockEntry entry, uint cellId) => CellIds.IsIndoor(cellId) && entry.TryGetCellIndex(cellId, out int index) ? index : -1;
-
-    /// <summary>The mover's landblock, its landblock-local position and entry; false when not loaded (or the indoor cell is unknown).</summary>
-    private bool Locate(ref Neighbourhood lands, Vector3 position, uint cellId, out int lbX, out int lbY, out Vector2 local, [NotNullWhen(true)] out LandblockEntry? entry)
+    /// <summary>
+    /// The mover's landblock, its landblock-local position and entry, and its cell's index there (−1 outdoors);
+    /// false when not loaded (or the indoor cell is unknown).
+    /// </summary>
+    private bool Locate(ref Neighbourhood lands, Vector3 position, uint cellId, out int lbX, out int lbY, out Vector2 local, [NotNullWhen(true)] out LandblockEntry? entry, out int cellIndex)
     {
+        cellIndex = -1;
         if (CellIds.IsIndoor(cellId))
         {
             (lbX, lbY) = (CellIds.LandblockX(cellId), CellIds.LandblockY(cellId));
@@ -137,7 +138,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         }
 
         entry = lands.Get(lbX, lbY);
-        return entry is not null && (!CellIds.IsIndoor(cellId) || entry.TryGetCellIndex(cellId, out _));
+        return entry is not null && (!CellIds.IsIndoor(cellId) || entry.TryGetCellIndex(cellId, out cellIndex));
     }
 
     /// <summary>
