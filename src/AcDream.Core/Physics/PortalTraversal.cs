@@ -55,8 +55,7 @@ internal sealed class PortalTraversal
 
         if (doorway >= 0)
         {
-            Landing through = Pass(ref q, hop, targets[doorway], doorwayT, falling: false);
-            return through.Kind == Arrival.Nothing ? Landing.Blocked(ResolveOutcome.Wall) : through;
+            return Pass(ref q, hop, targets[doorway], doorwayT, falling: false); // nothing beyond: a wall (the one it met there, if any)
         }
 
         if (cell.TrySampleGround(q.P1.X, q.P1.Y, q.Z, q.StepUp, out float floorZ))
@@ -191,7 +190,7 @@ internal sealed class PortalTraversal
 internal readonly record struct Hop(int Cell, int From, int Depth, float TStart, bool Falling)
 {
     /// <summary>The first cell of a move: the mover's own.</summary>
-    public static Hop Start(int cell, float tStart = 0f) => new(cell, -1, 0, tStart, false);
+    public static Hop Start(int cell, float tStart = 0f) => new(cell, Landing.NoCell, 0, tStart, false);
 }
 
 /// <summary>What a portal search arrived on.</summary>
@@ -217,9 +216,12 @@ internal enum Arrival
 /// </summary>
 internal readonly record struct Landing(Arrival Kind, int CellIndex, float Z, Vector2 TerrainLocal, ResolveOutcome Refusal, Vector3 WallNormal)
 {
-    public static Landing Nothing(Vector3 wallNormal) => new(Arrival.Nothing, -1, 0f, default, ResolveOutcome.Wall, wallNormal);
+    /// <summary>The <see cref="CellIndex"/> of a landing that is not on a cell's floor (and a first hop's <see cref="Hop.From"/>).</summary>
+    public const int NoCell = -1;
 
-    public static Landing Blocked(ResolveOutcome why) => new(Arrival.Blocked, -1, 0f, default, why, default);
+    public static Landing Nothing(Vector3 wallNormal) => new(Arrival.Nothing, NoCell, 0f, default, ResolveOutcome.Wall, wallNormal);
+
+    public static Landing Blocked(ResolveOutcome why) => new(Arrival.Blocked, NoCell, 0f, default, why, default);
 
     public static Landing OnFloor(int cellIndex, float z) => new(Arrival.Floor, cellIndex, z, default, ResolveOutcome.Moved, default);
 
@@ -227,6 +229,6 @@ internal readonly record struct Landing(Arrival Kind, int CellIndex, float Z, Ve
     public static Landing OnTerrain(ref MoveQuery q, LandblockEntry land, Vector2 local, float z)
     {
         q.Outside = land;
-        return new(Arrival.Terrain, -1, z, local, ResolveOutcome.Moved, default);
+        return new(Arrival.Terrain, NoCell, z, local, ResolveOutcome.Moved, default);
     }
 }

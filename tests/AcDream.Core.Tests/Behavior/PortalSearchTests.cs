@@ -134,6 +134,78 @@ public class PortalSearchTests
     }
 
     /// <summary>
+    /// A doorway into a room whose floor has an opening 10 m down just beyond it (into a shaft with a floor at its
+    /// foot): a mover walking through the doorway onto the opening walks, it does not fall through; it is refused.
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Frames))]
+    public void A_mover_walking_through_a_doorway_does_not_fall_through_an_opening_far_below(string frame)
+    {
+        Vector3[] far = Square(102f, 100f, 104f, 102f, GroundZ - 10f), foot = Square(102f, 100f, 104f, 102f, GroundZ - 20f);
+        CellSurface hall = new CellBuilder(0xA9B40100u).Floor(98f, 100f, 102f, 102f, GroundZ)
+            .Portal(0x0101, new Vector3(101f, 101f, GroundZ + 1f), Wall(102f, 100f, 102f, 102f, GroundZ, GroundZ + 2.5f)).Build();
+        CellSurface room = new CellBuilder(0xA9B40101u).Floor(104f, 100f, 106f, 102f, GroundZ)
+            .Portal(0x0100, new Vector3(103f, 101f, GroundZ + 1f), Wall(102f, 102f, 102f, 100f, GroundZ, GroundZ + 2.5f))
+            .Portal(0x0102, new Vector3(103f, 101f, GroundZ + 1f), far).Build();
+        CellSurface shaft = new CellBuilder(0xA9B40102u)
+            .Portal(0x0101, new Vector3(103f, 101f, GroundZ - 15f), far).Portal(0x0103, new Vector3(103f, 101f, GroundZ - 15f), foot).Build();
+        CellSurface bottom = new CellBuilder(0xA9B40103u).Floor(102f, 100f, 104f, 102f, GroundZ - 21f)
+            .Portal(0x0102, new Vector3(103f, 101f, GroundZ - 20.5f), foot).Build();
+        PhysicsEngine engine = Engine(frame);
+        engine.AddLandblock(Holtburg, FlatTerrain(GroundZ - 30f), [hall, room, shaft, bottom]);
+        Vector3 start = engine.GetLandblockOrigin(Holtburg) + new Vector3(101.5f, 101f, GroundZ);
+
+        ResolveResult r = engine.Resolve(start, 0xA9B40100u, new Vector3(1f, 0f, 0f), Step);
+        (r.IsRefused, r.Position, r.CellId).Should().Be((true, start, 0xA9B40100u), $"{frame}: walked through the doorway onto an opening 10 m below: {r}");
+    }
+
+    /// <summary>
+    /// Through a doorway into a room and on into that room's far wall beside its next doorway: refused as a wall,
+    /// with that wall's normal, facing the mover (the wall it met, though it met it beyond the doorway).
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Frames))]
+    public void A_move_through_a_doorway_into_the_next_rooms_wall_reports_that_wall(string frame)
+    {
+        CellSurface a = new CellBuilder(0xA9B40100u).Floor(100f, 100f, 102f, 104f, GroundZ)
+            .Portal(0x0101, new Vector3(101f, 102f, GroundZ + 1f), Wall(102f, 100f, 102f, 104f, GroundZ, GroundZ + 2.5f)).Build();
+        CellSurface b = new CellBuilder(0xA9B40101u).Floor(102f, 100f, 104f, 104f, GroundZ)
+            .Portal(0x0100, new Vector3(103f, 102f, GroundZ + 1f), Wall(102f, 104f, 102f, 100f, GroundZ, GroundZ + 2.5f))
+            .Portal(0x0102, new Vector3(103f, 102f, GroundZ + 1f), Wall(104f, 103f, 104f, 104f, GroundZ, GroundZ + 2.5f)).Build();
+        CellSurface c = new CellBuilder(0xA9B40102u).Floor(104f, 100f, 106f, 104f, GroundZ)
+            .Portal(0x0101, new Vector3(105f, 102f, GroundZ + 1f), Wall(104f, 104f, 104f, 103f, GroundZ, GroundZ + 2.5f)).Build();
+        PhysicsEngine engine = Engine(frame);
+        engine.AddLandblock(Holtburg, FlatTerrain(GroundZ - 20f), [a, b, c]);
+        Vector3 start = engine.GetLandblockOrigin(Holtburg) + new Vector3(101.5f, 101f, GroundZ);
+
+        ResolveResult r = engine.Resolve(start, 0xA9B40100u, new Vector3(3f, 0f, 0f), Step);
+        (r.Outcome, r.Position, r.SurfaceNormal).Should().Be((ResolveOutcome.Wall, start, new Vector3(-1f, 0f, 0f)), $"{frame}: {r}");
+    }
+
+    /// <summary>
+    /// A cellar whose stair (a ramp of its floor) rises to 0.2 m under an opening in its ceiling, the room's floor 3 m
+    /// up around it: a mover at the ramp's top stepping on past the opening's edge stands on the room's floor beside
+    /// the opening (0.2 m up), not on the cellar's floor under it (2.8 m down).
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Frames))]
+    public void At_the_top_of_a_stair_the_floor_above_beside_the_opening_wins_over_the_cellar_floor_below(string frame)
+    {
+        Vector3[] opening = Square(100f, 100f, 104f, 102f, GroundZ + 3f);
+        CellSurface cellar = new CellBuilder(0xA9B40100u).Floor(94f, 98f, 110f, 104f, GroundZ)
+            .Physics(new(100f, 100f, GroundZ + 0.8f), new(103.5f, 100f, GroundZ + 2.8f), new(103.5f, 102f, GroundZ + 2.8f), new(100f, 102f, GroundZ + 0.8f))
+            .Portal(0x0101, new Vector3(102f, 101f, GroundZ + 1f), opening).Build();
+        CellSurface room = new CellBuilder(0xA9B40101u).Floor(104f, 98f, 110f, 104f, GroundZ + 3f).Floor(94f, 98f, 100f, 104f, GroundZ + 3f)
+            .Portal(0x0100, new Vector3(102f, 101f, GroundZ + 4f), opening).Build();
+        PhysicsEngine engine = Engine(frame);
+        engine.AddLandblock(Holtburg, FlatTerrain(GroundZ - 20f), [cellar, room]);
+        Vector3 origin = engine.GetLandblockOrigin(Holtburg);
+
+        ResolveResult r = engine.Resolve(origin + new Vector3(103.4f, 101f, GroundZ + 2.8f), 0xA9B40100u, new Vector3(0.8f, 0f, 0f), Step);
+        (r.Outcome, r.CellId, r.Position.Z).Should().Be((ResolveOutcome.Moved, 0xA9B40101u, GroundZ + 3f), $"{frame}: {r}");
+    }
+
+    /// <summary>
     /// A cottage's door on its landblock's east (or north) edge: a mover leaving through it lands on the next
     /// landblock's terrain (its own height, its outdoor cell); with that landblock not loaded the move is refused as
     /// unloaded ahead, and at the world's east edge as its edge.
