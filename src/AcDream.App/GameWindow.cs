@@ -315,26 +315,25 @@ public sealed class GameWindow : IDisposable
         }
 
         List<ObjectSurface> objects = BuildObjects(id, loaded, ids);
-        if (objects.Count > 0)
+        while (true)
         {
             try
             {
                 Physics.AddLandblock(id, terrain, cells, objects);
+                break;
             }
-            catch (ArgumentException e)
+            catch (ObjectRefusedException e)
             {
-                // The objects were checked one by one; what the engine still refuses is their combination
-                // (or the landblock itself, which the call without objects then reports).
+                // The engine names the one object it refuses and why: that object is dropped, the rest kept.
+                _log($"landblock 0x{id:X8}: object 0x{e.ObjectId:X8} skipped ({e.Rule}): {e.Message}");
+                objects.RemoveAt(e.ObjectIndex);
+            }
+            catch (ArgumentException e) when (objects.Count > 0)
+            {
+                // Not one object's fault but their combination (more outdoor objects than the engine takes):
+                // the landblock is registered without them.
                 _log($"landblock 0x{id:X8}: its {objects.Count} objects skipped: {e.Message}");
                 objects.Clear();
-            }
-        }
-
-        if (objects.Count == 0)
-        {
-            try
-            {
-                Physics.AddLandblock(id, terrain, cells);
             }
             catch (ArgumentException e)
             {
@@ -371,8 +370,8 @@ public sealed class GameWindow : IDisposable
     /// <summary>
     /// The landblock's objects, built one by one (each through <see cref="ObjectSurface.FromLandblock"/>
     /// with that object alone) so a bad one is reported and skipped, as a bad cell is: the
-    /// <see cref="LandBlockInfo"/>'s objects and buildings (a building whose door cell is not
-    /// registered is skipped), then the static objects of each registered cell.
+    /// <see cref="LandBlockInfo"/>'s objects and buildings, then the static objects of each registered
+    /// cell. (A building whose door cell is not registered is refused by the engine, by name, and dropped.)
     /// </summary>
     private List<ObjectSurface> BuildObjects(uint landblockId, LoadedLandblock loaded, HashSet<uint> cellIds)
     {
@@ -409,13 +408,6 @@ public sealed class GameWindow : IDisposable
                 {
                     BuildingInfo building = info.Buildings![i];
                     string what = $"building {i} (0x{building?.ModelId ?? 0:X8})";
-                    uint missing = (building?.Portals ?? []).Where(p => p is not null).Select(p => (landblockId & 0xFFFF0000u) | p.OtherCellId).FirstOrDefault(door => !cellIds.Contains(door));
-                    if (missing != 0)
-                    {
-                        _log($"landblock 0x{landblockId:X8}: {what} skipped: its door cell 0x{missing:X8} is not registered");
-                        continue;
-                    }
-
                     Build(what, new LandBlockInfo { Id = info.Id, Buildings = [building!] }, null);
                 }
             }

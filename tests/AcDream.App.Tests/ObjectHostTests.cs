@@ -68,7 +68,7 @@ public class ObjectHostTests
         string all = string.Join(" | ", warnings);
         warnings.Should().Contain(w => w.Contains("object 0 (0x01999999)") && w.Contains("skipped"), all);
         warnings.Should().Contain(w => w.Contains("object 1 (0x05000001)") && w.Contains("skipped"), all);
-        warnings.Should().Contain(w => w.Contains("building 2 (0x01000F69)") && w.Contains("0xA9B40199 is not registered"), all);
+        warnings.Should().ContainSingle(w => w.Contains("object 0x01000F69 skipped (DoorCellNotGiven)") && w.Contains("door cell 0xA9B40199"), all);
         warnings.Should().Contain(w => w.Contains("object 0 (0x01888888) of cell 0xA9B40147") && w.Contains("skipped"), all);
         warnings.Should().Contain(w => w.Contains("cell 0xA9B40190") && w.Contains("skipped with their cell"), all);
         window.ObjectCounts[Holtburg].Should().Be(2, "the two good buildings are registered");

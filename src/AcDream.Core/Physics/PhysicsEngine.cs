@@ -110,8 +110,8 @@ public sealed class PhysicsEngine
     /// <param name="cellId">The cell the position is in (<c>0xXXYYCCCC</c>), or an outdoor id / 0 for the terrain.</param>
     /// <param name="groundZ">The ground's Z, metres.</param>
     /// <param name="normal">The ground's unit normal (pointing up).</param>
-    /// <returns>False when the landblock is not loaded, the cell is unknown, or neither a floor of the cell nor an object's floor lies under the position.</returns>
-    /// <exception cref="ArgumentException">A coordinate is not finite.</exception>
+    /// <returns>False when the landblock is not loaded, or neither a floor of the cell nor an object's floor lies under the position.</returns>
+    /// <exception cref="ArgumentException">A coordinate is not finite, or the indoor cell is not in its loaded landblock (as <c>Resolve</c>).</exception>
     public bool TryGetGround(Vector3 worldPosition, uint cellId, out float groundZ, out Vector3 normal) =>
         TryGetGround(worldPosition, cellId, 0f, out groundZ, out normal, out _);
 
@@ -127,8 +127,8 @@ public sealed class PhysicsEngine
     /// <param name="groundZ">The ground's Z, metres.</param>
     /// <param name="normal">The ground's unit normal (pointing up).</param>
     /// <param name="objectId">The GfxObj or Setup id of the object whose floor it is; 0 for the terrain or a cell's floor.</param>
-    /// <returns>False when the landblock is not loaded, the cell is unknown, or nothing lies under the position.</returns>
-    /// <exception cref="ArgumentException">A coordinate or the step is not finite, or the step is negative.</exception>
+    /// <returns>False when the landblock is not loaded, or nothing lies under the position.</returns>
+    /// <exception cref="ArgumentException">A coordinate or the step is not finite, the step is negative, or the indoor cell is not in its loaded landblock (as <c>Resolve</c>).</exception>
     public bool TryGetGround(Vector3 worldPosition, uint cellId, float stepUpHeight, out float groundZ, out Vector3 normal, out uint objectId)
     {
         if (!Geometry.IsFinite(worldPosition))
@@ -143,11 +143,12 @@ public sealed class PhysicsEngine
 
         (groundZ, normal, objectId) = (0f, default, 0u);
         var lands = new Neighbourhood(_registry);
-        if (LocateQuery(ref lands, worldPosition, cellId, out Vector2 p, out int index) is not LandblockEntry entry)
+        if (!Locator.TryFind(_frame, ref lands, worldPosition, cellId, out Place place, nameof(cellId)))
         {
             return false;
         }
 
+        (LandblockEntry entry, Vector2 p, int index) = (place.Entry, place.Local, place.CellIndex);
         ObjectSurface? floor;
         if (index >= 0)
         {
@@ -201,11 +202,12 @@ public sealed class PhysicsEngine
         }
 
         var lands = new Neighbourhood(_registry);
-        if (LocateQuery(ref lands, worldPosition, cellId, out Vector2 p, out int index) is not LandblockEntry entry)
+        if (!Locator.TryFind(_frame, ref lands, worldPosition, cellId, out Place place, nameof(cellId)))
         {
             return 0;
         }
 
+        (LandblockEntry entry, Vector2 p, int index) = (place.Entry, place.Local, place.CellIndex);
         ObjectSurface[] objects = index >= 0 ? entry.Cells[index].Objects : entry.OutdoorObjects;
 
         uint best = 0;
@@ -228,32 +230,6 @@ public sealed class PhysicsEngine
         }
 
         return best;
-    }
-
-    /// <summary>
-    /// Where a host query's position is: its landblock's entry (null when not loaded, or the indoor cell
-    /// is unknown), the landblock-local point as <c>Resolve</c> forms it, and the indoor cell's index
-    /// (−1 outdoors).
-    /// </summary>
-    private LandblockEntry? LocateQuery(ref Neighbourhood lands, Vector3 worldPosition, uint cellId, out Vector2 local, out int cellIndex)
-    {
-        cellIndex = -1;
-        if (CellIds.IsIndoor(cellId))
-        {
-            int x = CellIds.LandblockX(cellId), y = CellIds.LandblockY(cellId);
-            local = default;
-            if (lands.Get(x, y) is not LandblockEntry entry || !entry.TryGetCellIndex(cellId, out cellIndex))
-            {
-                cellIndex = -1;
-                return null;
-            }
-
-            local = _frame.Representable(x, y, new Vector2(worldPosition.X, worldPosition.Y) - _frame.Origin(x, y));
-            return entry;
-        }
-
-        _frame.Locate(worldPosition, cellId, out int lbX, out int lbY, out local);
-        return lands.Get(lbX, lbY);
     }
 
     /// <summary>
@@ -291,162 +267,13 @@ public sealed class PhysicsEngine
     /// <param name="cells">Its indoor cells (may be empty).</param>
     /// <param name="objects">Its objects (may be empty), landblock-local.</param>
     /// <exception cref="ArgumentNullException">An argument, a cell or an object is null.</exception>
-    /// <exception cref="ArgumentException">As the three-argument call; or an object stands in a cell that is not among <paramref name="cells"/>, a building's door cell is not among them, or more than <see cref="PhysicsConstants.MaxOutdoorObjects"/> objects stand outdoors.</exception>
+    /// <exception cref="ObjectRefusedException">One object breaks a rule (its index, id and rule named): it stands in a cell that is not among <paramref name="cells"/>, a building's door cell is not among them, or an outdoor object reaches more than <see cref="PhysicsConstants.MaxSeamReach"/> past the landblock.</exception>
+    /// <exception cref="ArgumentException">As the three-argument call; or more than <see cref="PhysicsConstants.MaxOutdoorObjects"/> objects stand outdoors, or a building's walls reach more than <see cref="PhysicsConstants.MaxSeamReach"/> past the landblock.</exception>
     public void AddLandblock(
         uint landblockId,
         TerrainSurface terrain,
         IReadOnlyList<CellSurface> cells,
-        IReadOnlyList<ObjectSurface> objects)
-    {
-        ArgumentNullException.ThrowIfNull(objects);
-        CellIds.ValidateLandblockId(landblockId, nameof(landblockId));
-        ArgumentNullException.ThrowIfNull(terrain);
-        ArgumentNullException.ThrowIfNull(cells);
-        uint prefix = CellIds.Prefix(landblockId);
-        if (terrain.LandblockId is uint terrainId && CellIds.Prefix(terrainId) != prefix)
-        {
-            throw new ArgumentException(
-                $"landblock 0x{prefix | 0xFFFF:X8}: the terrain was built for landblock 0x{terrainId:X8}.", nameof(terrain));
-        }
-
-        var sorted = new CellSurface[cells.Count];
-        for (int i = 0; i < sorted.Length; i++)
-        {
-            CellSurface cell = cells[i] ?? throw new ArgumentNullException(nameof(cells), $"landblock 0x{prefix | 0xFFFF:X8}: cells[{i}] is null.");
-            if (CellIds.Prefix(cell.CellId) != prefix)
-            {
-                throw new ArgumentException(
-                    $"landblock 0x{prefix | 0xFFFF:X8}: cell 0x{cell.CellId:X8} belongs to another landblock.", nameof(cells));
-            }
-
-            sorted[i] = cell;
-        }
-
-        Array.Sort(sorted, static (a, b) => a.CellId.CompareTo(b.CellId));
-        for (int i = 1; i < sorted.Length; i++)
-        {
-            if (sorted[i].CellId == sorted[i - 1].CellId)
-            {
-                throw new ArgumentException(
-                    $"landblock 0x{prefix | 0xFFFF:X8}: cell 0x{sorted[i].CellId:X8} is listed twice.", nameof(cells));
-            }
-        }
-
-        ObjectSurface[] outdoor = objects.Count == 0 ? [] : PlaceObjects(prefix, sorted, objects);
-        var entry = new LandblockEntry(CellIds.LandblockX(landblockId), CellIds.LandblockY(landblockId), terrain, sorted, outdoor);
-        CheckSeamReach(prefix, entry);
-        _registry.Set(entry);
-    }
-
-    /// <summary>
-    /// Refuses a landblock whose outdoor objects or building cells reach more than
-    /// <see cref="PhysicsConstants.MaxSeamReach"/> past its edges (neighbours look only that far), naming the first.
-    /// </summary>
-    private static void CheckSeamReach(uint prefix, LandblockEntry entry)
-    {
-        const float reach = PhysicsConstants.MaxSeamReach, far = PhysicsConstants.LandblockSize + PhysicsConstants.MaxSeamReach;
-        if (entry.OutdoorMin.X >= -reach && entry.OutdoorMin.Y >= -reach && entry.OutdoorMax.X <= far && entry.OutdoorMax.Y <= far)
-        {
-            return;
-        }
-
-        for (int i = 0; i < entry.OutdoorObjects.Length; i++)
-        {
-            Beyond(ObjectBox.GridBounds(entry.OutdoorObjects[i]), $"object 0x{entry.OutdoorObjects[i].ObjectId:X8} (outdoor object {i})", "objects");
-        }
-
-        for (int i = 0; i < entry.Cells.Length; i++)
-        {
-            if (entry.MetOutdoors[i])
-            {
-                Beyond((entry.CellWallBounds[i].Min, entry.CellWallBounds[i].Max), $"cell 0x{entry.Cells[i].CellId:X8}'s walls", "cells");
-            }
-        }
-
-        void Beyond((Vector2 Min, Vector2 Max) box, string what, string argument)
-        {
-            if (!(box.Min.X >= -reach && box.Min.Y >= -reach && box.Max.X <= far && box.Max.Y <= far) && box.Min.X <= box.Max.X)
-            {
-                throw new ArgumentException(
-                    $"landblock 0x{prefix | 0xFFFF:X8}: {what} reach from {box.Min} to {box.Max}, more than {reach} m past the landblock (0..192 m); " +
-                    "outdoor objects and the walls of buildings may reach at most PhysicsConstants.MaxSeamReach past its edges.",
-                    argument);
-            }
-        }
-    }
-
-    /// <summary>
-    /// Puts each indoor object into (a copy of) its cell in <paramref name="sorted"/>, marks the cells of
-    /// buildings with shells, and returns the outdoor objects.
-    /// </summary>
-    private static ObjectSurface[] PlaceObjects(uint prefix, CellSurface[] sorted, IReadOnlyList<ObjectSurface> objects)
-    {
-        var outdoor = new List<ObjectSurface>();
-        var inCell = new List<ObjectSurface>?[sorted.Length];
-        var shelled = new bool[sorted.Length];
-        for (int i = 0; i < objects.Count; i++)
-        {
-            ObjectSurface o = objects[i] ?? throw new ArgumentNullException(nameof(objects), $"landblock 0x{prefix | 0xFFFF:X8}: objects[{i}] is null.");
-            if (o.CellId == 0)
-            {
-                outdoor.Add(o);
-                foreach (uint door in o.DoorCellIds)
-                {
-                    Shell(IndexOf(door, $"object 0x{o.ObjectId:X8} (objects[{i}]): its door cell"));
-                }
-            }
-            else
-            {
-                (inCell[IndexOf(o.CellId, $"object 0x{o.ObjectId:X8} (objects[{i}]): its cell")] ??= []).Add(o);
-            }
-        }
-
-        for (int c = 0; c < sorted.Length; c++)
-        {
-            if (inCell[c] is not null || shelled[c])
-            {
-                sorted[c] = sorted[c].WithObjects(inCell[c]?.ToArray() ?? [], shelled[c]);
-            }
-        }
-
-        if (outdoor.Count > PhysicsConstants.MaxOutdoorObjects)
-        {
-            throw new ArgumentException(
-                $"landblock 0x{prefix | 0xFFFF:X8}: {outdoor.Count} objects outdoors; at most {PhysicsConstants.MaxOutdoorObjects} are supported.", nameof(objects));
-        }
-
-        return [.. outdoor];
-
-        int IndexOf(uint cellId, string what)
-        {
-            int index = Array.FindIndex(sorted, c => c.CellId == cellId);
-            return index >= 0 ? index : throw new ArgumentException(
-                $"landblock 0x{prefix | 0xFFFF:X8}: {what} 0x{cellId:X8} is not among the cells given.", nameof(objects));
-        }
-
-        void Shell(int door)
-        {
-            // The building: every cell reached from its door through portals between cells.
-            var open = new Stack<int>([door]);
-            while (open.TryPop(out int c))
-            {
-                if (shelled[c])
-                {
-                    continue;
-                }
-
-                shelled[c] = true;
-                foreach (CellPortalInfo portal in sorted[c].Portals)
-                {
-                    int next = Array.FindIndex(sorted, s => s.CellId == portal.TargetCellId);
-                    if (next >= 0 && !shelled[next])
-                    {
-                        open.Push(next);
-                    }
-                }
-            }
-        }
-    }
+        IReadOnlyList<ObjectSurface> objects) => _registry.Set(LandblockAssembly.Build(landblockId, terrain, cells, objects));
 
     /// <summary>Remove all surfaces for an unloaded landblock.</summary>
     /// <remarks>Any low 16 bits are accepted. Removing a landblock that is not registered does nothing, so an unload path may call it unconditionally. One writer thread at a time; resolvers may run meanwhile.</remarks>

@@ -100,7 +100,38 @@ public class SeamReachTests
         var tree = Objects.ObjectKit.Tree(0.4f, 5f);
         Action far = () => engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [],
             [new ObjectSurface(tree.Setup, tree.Parts, Objects.ObjectKit.At(new Vector3(-30f, 50f, GroundZ), 0f), 0)]);
-        far.Should().Throw<ArgumentException>().WithMessage("*object 0x02000001*").And.ParamName.Should().Be("objects");
+        ObjectRefusedException refused = far.Should().Throw<ObjectRefusedException>().WithMessage("*object 0x02000001*").Which;
+        (refused.ParamName, refused.ObjectIndex, refused.ObjectId, refused.Rule).Should().Be(("objects", 0, 0x02000001u, ObjectRule.ReachesPastSeam));
         engine.LandblockCount.Should().Be(1, "the landblock registered before stays");
+    }
+
+    [Fact]
+    public void A_refused_object_is_named_by_its_index_id_and_rule_so_the_rest_can_be_registered()
+    {
+        var engine = new PhysicsEngine(Holtburg);
+        var tree = Objects.ObjectKit.Tree(0.4f, 5f);
+        ObjectSurface Tree(Vector3 at, uint cellId = 0) => new(tree.Setup, tree.Parts, Objects.ObjectKit.At(at, 0f), cellId);
+        var objects = new List<ObjectSurface> { Tree(new(50f, 50f, GroundZ)), Tree(new(60f, 50f, GroundZ), 0xA9B40150u), Tree(new(-30f, 50f, GroundZ)), Tree(new(70f, 50f, GroundZ)) };
+        var refusals = new List<(int Index, ObjectRule Rule)>();
+        while (true)
+        {
+            try
+            {
+                engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [], objects);
+                break;
+            }
+            catch (ObjectRefusedException e)
+            {
+                e.ObjectId.Should().Be(objects[e.ObjectIndex].ObjectId, e.Message);
+                refusals.Add((e.ObjectIndex, e.Rule));
+                objects.RemoveAt(e.ObjectIndex);
+            }
+        }
+
+        refusals.Should().Equal([(1, ObjectRule.CellNotGiven), (1, ObjectRule.ReachesPastSeam)], "the tree in a cell not given, then the one 30 m past the seam");
+        objects.Should().HaveCount(2);
+        engine.TryGetGround(engine.ToWorld(Holtburg, new Vector3(50f, 50f, GroundZ + 10f)), 0u, 0f, out _, out _, out uint onTree).Should().BeTrue();
+        onTree.Should().Be(0u, "a tree's top is no floor, but the landblock and its two good trees are registered");
+        engine.LandblockCount.Should().Be(1);
     }
 }

@@ -120,25 +120,13 @@ internal sealed class BodyPlanner(WorldFrame frame)
         return (1f - hit.T) * length > PhysicsConstants.ContactTolerance; // stopped short of where the step went: not a rounding of a contact the path ended at
     }
 
-    /// <summary>
-    /// The mover's landblock, its landblock-local position and entry, and its cell's index there (−1 outdoors);
-    /// false when not loaded (or the indoor cell is unknown).
-    /// </summary>
+    /// <summary>The mover's place (<see cref="Locator"/>); false when its landblock is not loaded.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private bool Locate(ref Neighbourhood lands, Vector3 position, uint cellId, out int lbX, out int lbY, out Vector2 local, [NotNullWhen(true)] out LandblockEntry? entry, out int cellIndex)
     {
-        cellIndex = -1;
-        if (CellIds.IsIndoor(cellId))
-        {
-            (lbX, lbY) = (CellIds.LandblockX(cellId), CellIds.LandblockY(cellId));
-            local = frame.Representable(lbX, lbY, new Vector2(position.X, position.Y) - frame.Origin(lbX, lbY));
-        }
-        else
-        {
-            frame.Locate(position, cellId, out lbX, out lbY, out local);
-        }
-
-        entry = lands.Get(lbX, lbY);
-        return entry is not null && (!CellIds.IsIndoor(cellId) || entry.TryGetCellIndex(cellId, out cellIndex));
+        bool found = Locator.TryFind(frame, ref lands, position, cellId, out Place place);
+        (lbX, lbY, local, entry, cellIndex) = (place.X, place.Y, place.Local, place.Entry, place.CellIndex);
+        return found;
     }
 
     /// <summary>

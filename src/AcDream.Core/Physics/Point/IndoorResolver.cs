@@ -13,21 +13,15 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
 {
     public ResolveResult Resolve(ref MoveQuery q)
     {
-        int lbX = CellIds.LandblockX(q.CellId), lbY = CellIds.LandblockY(q.CellId);
-        LandblockEntry? entry = q.Lands.Get(lbX, lbY);
-        if (entry is null)
+        if (!Locator.TryFind(frame, ref q.Lands, q.Position, q.CellId, out Place place))
         {
             return new ResolveResult(q.Position, q.CellId, true) { Outcome = ResolveOutcome.Held }; // the cell's landblock is not loaded
         }
 
-        if (!entry.TryGetCellIndex(q.CellId, out int cellIndex))
-        {
-            ThrowNotRegistered(q.CellId);
-        }
-
+        (LandblockEntry entry, int cellIndex) = (place.Entry, place.CellIndex);
         q.Entry = entry;
-        q.P0 = frame.Representable(lbX, lbY, new Vector2(q.Position.X, q.Position.Y) - frame.Origin(lbX, lbY));
-        q.P1 = frame.Representable(lbX, lbY, q.P0 + q.Delta);
+        q.P0 = place.Local;
+        q.P1 = frame.Representable(place.X, place.Y, q.P0 + q.Delta);
         CellSurface cell = entry.Cells[cellIndex];
         int start = cell.Objects.Length > 0 ? AboveTheCeiling(entry, cellIndex, q.P0, q.Z) : cellIndex;
         Landing landing = portals.FindLanding(ref q, Hop.Start(start));
@@ -44,7 +38,7 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
                 q.ObjectStep = landing.Kind == Arrival.Floor && entry.Cells[landing.CellIndex].Objects.Length > 0; // a floor among objects may be theirs
                 return Refuse(ref q, cell, ResolveOutcome.StepTooHigh);
             case Arrival.Floor:
-                return Answers.Land(frame.ToWorld(lbX, lbY, q.P1, landing.Z), q.Z, entry.Cells[landing.CellIndex].CellId, in q.Options);
+                return Answers.Land(frame.ToWorld(place.X, place.Y, q.P1, landing.Z), q.Z, entry.Cells[landing.CellIndex].CellId, in q.Options);
             case Arrival.Terrain:
                 LandblockEntry land = q.Outside!;
                 Vector2 local = landing.TerrainLocal;
@@ -104,12 +98,6 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
 
         return cellIndex;
     }
-
-    /// <summary>Out of line, so Resolve's frame carries no string builder to zero on every call.</summary>
-    [DoesNotReturn]
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private static void ThrowNotRegistered(uint cellId) =>
-        throw new ArgumentException($"cell 0x{cellId:X8} is not registered in its landblock 0x{cellId | 0xFFFF:X8}.", "currentCellId");
 
     /// <summary>The mover stays where it is, on its own cell's floor if it is at (or below) it.</summary>
     private ResolveResult Refuse(ref MoveQuery q, CellSurface cell, ResolveOutcome why, Vector3 normal = default) =>
