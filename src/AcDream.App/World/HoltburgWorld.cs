@@ -99,7 +99,7 @@ internal sealed class HoltburgWorld : ILandblockSource
         foreach (CellFixtureReader.FixtureCell cell in _cells)
         {
             // The fixtures carry no environment ids: each cell gets its own synthetic environment,
-            // numbered as the cell (0x0D000145 for 0xA9B40145). No CellIds helper gives a cell number.
+            // numbered as the cell (0x0D000145 for 0xA9B40145).
             ushort environmentId = CellIds.CellNumber(cell.CellId);
             cell.EnvCell.EnvironmentId = environmentId;
             cell.EnvCell.CellStructure = 0;

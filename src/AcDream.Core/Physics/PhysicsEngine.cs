@@ -4,7 +4,8 @@ using System.Runtime.CompilerServices;
 namespace AcDream.Core.Physics;
 
 /// <summary>
-/// Top-level resolver that owns the per-landblock terrain surfaces and per-cell indoor surfaces.
+/// The engine: owns the registered landblocks (terrain, indoor cells and objects) and answers where a
+/// mover ends up (<c>Resolve</c>) and what ground lies under a position.
 /// </summary>
 /// <remarks>
 /// <para>

@@ -18,10 +18,10 @@ public enum ResolveOutcome : byte
     /// <summary>Refused (walkable slope): the terrain ahead is too steep to climb.</summary>
     SlopeTooSteep,
 
-    /// <summary>Refused indoors: no floor and no portal ahead, a doorway's wall, or a portal to a cell the engine does not have.</summary>
+    /// <summary>Refused by a wall, indoors or outdoors: no floor and no portal ahead in a cell, a doorway's wall, a portal to a cell the engine does not have, or a cell's or object's wall that stops the point's step line or the body (which then did not move).</summary>
     Wall,
 
-    /// <summary>Refused outdoors (doors only): a building's outer wall; only its doors let a mover in.</summary>
+    /// <summary>Refused outdoors by a building's outer wall: a wall of its shell, or with doors only the building's footprint away from its doors; only its doors let a mover in.</summary>
     OuterWall,
 
     /// <summary>Refused: the land ahead is not loaded.</summary>
