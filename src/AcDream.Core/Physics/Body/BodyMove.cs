@@ -1,0 +1,60 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// One sweep of a body among walls: a disc of contact radius <see cref="Radius"/> whose centre moves from
+/// <see cref="P"/> along <see cref="D"/>, meeting walls where they reach between <see cref="ZLow"/> and
+/// <see cref="ZHigh"/>; a wall's end it comes no nearer to than <see cref="Graze"/> is grazed, not met, and
+/// rounding may leave it up to <see cref="Sink"/> inside its contact radius (see <see cref="BodySweep.Slide"/>).
+/// Landblock-local metres of the mover's landblock.
+/// </summary>
+internal readonly record struct BodyMove(Vector2 P, Vector2 D, float Radius, float Graze, float Sink, float ZLow, float ZHigh)
+{
+    /// <summary>A move of a body of contact radius <paramref name="radius"/> whose rounding sink is <paramref name="sink"/>: its graze is the radius less the sink and the contact tolerance.</summary>
+    public static BodyMove Of(Vector2 p, Vector2 d, float radius, float sink, float zLow, float zHigh) =>
+        new(p, d, radius, radius - sink - PhysicsConstants.ContactTolerance, sink, zLow, zHigh);
+
+    /// <summary>This move's body and band, from <paramref name="p"/> along <paramref name="d"/>.</summary>
+    public BodyMove At(Vector2 p, Vector2 d) => this with { P = p, D = d };
+}
+
+/// <summary>
+/// The running answer of a sweep: the earliest contact so far (<see cref="T"/>, the fraction of the move,
+/// 1 for none; <see cref="Normal"/>, the wall's unit normal seen from above, pointing at the body) and the
+/// deepest overlap at the start (<see cref="Depth"/> metres, with <see cref="Outward"/>, the unit normal out of it).
+/// </summary>
+internal struct WallHit
+{
+    public float T;
+    public Vector2 Normal;
+    public float Depth;
+    public Vector2 Outward;
+
+    /// <summary>No contact and no overlap yet.</summary>
+    public static WallHit None => new() { T = 1f };
+
+    /// <summary>
+    /// A contact at fraction <paramref name="t"/> with unit normal <paramref name="normal"/>: kept when earlier
+    /// than the one so far, or as early with a normal that comes first in a fixed order (larger X, then larger
+    /// Y). The nearest contact therefore does not depend on the order in which walls are swept.
+    /// </summary>
+    public void Contact(float t, Vector2 normal)
+    {
+        if (t < T || (t == T && t < 1f && Precedes(normal, Normal)))
+        {
+            (T, Normal) = (t, normal);
+        }
+    }
+
+    /// <summary>An overlap of <paramref name="depth"/> metres at the start, out along <paramref name="outward"/>: kept when deeper (ties as <see cref="Contact"/>).</summary>
+    public void Overlap(float depth, Vector2 outward)
+    {
+        if (depth > Depth || (depth == Depth && depth > 0f && Precedes(outward, Outward)))
+        {
+            (Depth, Outward) = (depth, outward);
+        }
+    }
+
+    private static bool Precedes(Vector2 a, Vector2 b) => a.X > b.X || (a.X == b.X && a.Y > b.Y);
+}
