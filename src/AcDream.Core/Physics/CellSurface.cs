@@ -128,7 +128,7 @@ public sealed partial class CellSurface
     /// stands on at (x, y): the cell's floor nearest the feet, or the floor of an object standing in the
     /// cell that is higher than that and no more than the step above the feet (a thing on the floor is
     /// climbed when it is low enough), and so on from there to rest
-    /// (<see cref="ObjectGeometry.RaiseToRest(ReadOnlySpan{ObjectSurface}, float, float, float, float, bool, ref float, out int)"/>).
+    /// (<see cref="ObjectFloors.RaiseToRest"/>).
     /// Without objects, exactly <see cref="TrySampleFloor(float, float, float, out float)"/>.
     /// </summary>
     internal bool TrySampleGround(float x, float y, float feetZ, float stepUp, out float z)
@@ -139,7 +139,10 @@ public sealed partial class CellSurface
             return found;
         }
 
-        return ObjectGeometry.RaiseToRest(Objects, x, y, feetZ, stepUp, found, ref z, out _) || found;
+        var rest = new FloorRest(z, found);
+        bool raised = ObjectFloors.RaiseToRest(Objects, new Vector2(x, y), feetZ, stepUp, ref rest);
+        z = rest.Z;
+        return raised || found;
     }
 
     /// <summary>Landblock-local XY bounds of the floor, grown by the edge tolerance; empty when there is no floor.</summary>

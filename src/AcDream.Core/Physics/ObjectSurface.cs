@@ -217,15 +217,15 @@ public sealed partial class ObjectSurface
     }
 
     /// <summary>
-    /// Whether a floor of this object rises through height <paramref name="h"/> (a point mover's feet plus its step)
-    /// on the move <paramref name="p0"/> → <paramref name="p1"/> (landblock-local; box <paramref name="lo"/>–<paramref name="hi"/>)
-    /// before fraction <paramref name="t"/>: the move comes from where the floor's plane is at or below that line to
+    /// Whether a floor of this object rises through the height of <paramref name="line"/> (a point mover's feet plus
+    /// its step) on its move (landblock-local) before fraction <paramref name="t"/>: the move comes from where the floor's plane is at or below that line to
     /// where it is above it, crossing it within the floor. The mover would pass under a floor (a ramp rising ahead
     /// of it) that its step line runs into, so it is stopped there as by a rise too high: <paramref name="t"/> is
     /// where, <paramref name="normal"/> the horizontal unit normal facing the mover (down the slope).
     /// </summary>
-    internal bool RisesThrough(Vector2 p0, Vector2 p1, Vector2 lo, Vector2 hi, float h, ref float t, ref Vector3 normal)
+    internal bool RisesThrough(in StepLine line, ref float t, ref Vector3 normal)
     {
+        (Vector2 p0, Vector2 p1, Vector2 lo, Vector2 hi, float h) = (line.P0, line.P1, line.Lo, line.Hi, line.H);
         if (FloorMin.X > hi.X || FloorMax.X < lo.X || FloorMin.Y > hi.Y || FloorMax.Y < lo.Y)
         {
             return false;

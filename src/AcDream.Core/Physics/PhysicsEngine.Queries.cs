@@ -73,92 +73,14 @@ public sealed partial class PhysicsEngine
 
         (groundZ, normal, objectId) = (0f, default, 0u);
         var lands = new Neighbourhood(_registry);
-        if (!Locator.TryFind(_frame, ref lands, worldPosition, cellId, out Place place, nameof(cellId)))
+        if (!Locator.TryFind(_frame, ref lands, worldPosition, cellId, out Place place, nameof(cellId))
+            || !Ground.TryUnder(ref lands, in place, worldPosition.Z, stepUpHeight, out groundZ, out SurfaceContact floor))
         {
             return false;
         }
 
-        (LandblockEntry entry, Vector2 p, int index) = (place.Entry, place.Local, place.CellIndex);
-        ObjectSurface? floor;
-        if (index >= 0)
-        {
-            CellSurface cell = entry.Cells[index];
-            bool found = cell.TrySampleFloor(p.X, p.Y, worldPosition.Z, out groundZ, out normal);
-            if (!ObjectGeometry.RaiseToRest(cell.Objects, p.X, p.Y, worldPosition.Z, stepUpHeight, found, ref groundZ, out int hit))
-            {
-                return found;
-            }
-
-            floor = cell.Objects[hit];
-        }
-        else
-        {
-            groundZ = entry.Terrain.SampleZUnchecked(p.X, p.Y);
-            normal = entry.Terrain.NormalUnchecked(p.X, p.Y);
-            ObjectHit ground = ObjectGeometry.GroundOutdoors(ref lands, entry, p, worldPosition.Z, stepUpHeight, groundZ);
-            (groundZ, floor) = (ground.GroundZ, ground.Floor);
-            if (floor is null)
-            {
-                return true;
-            }
-        }
-
-        objectId = floor.ObjectId;
-        normal = floor.FloorNormal(p.X, p.Y, groundZ);
+        normal = floor.Normal;
+        objectId = floor.Kind == SurfaceKind.ObjectFloor ? floor.Id : 0u;
         return true;
-    }
-
-    /// <summary>
-    /// The object with a wall nearest a world position, seen from above, within <paramref name="reach"/>
-    /// metres: among the outdoor objects of the landblock under it (outdoor <paramref name="cellId"/>) or
-    /// the objects standing in the cell; walls spanning the position's Z up to 2 m above it. For a host's
-    /// reports (which object stopped a mover); not used by <c>Resolve</c>.
-    /// </summary>
-    /// <param name="worldPosition">World metres.</param>
-    /// <param name="cellId">The cell the position is in, or an outdoor id / 0.</param>
-    /// <param name="reach">How far to look, metres, ≥ 0.</param>
-    /// <returns>The object's GfxObj or Setup id, or 0 when no object's wall is within reach.</returns>
-    /// <exception cref="ArgumentException">A coordinate or the reach is not finite, or the reach is negative.</exception>
-    public uint ObjectWallNear(Vector3 worldPosition, uint cellId, float reach)
-    {
-        if (!Geometry.IsFinite(worldPosition))
-        {
-            throw new ArgumentException($"world position {worldPosition} must be finite.", nameof(worldPosition));
-        }
-
-        if (!float.IsFinite(reach) || reach < 0f)
-        {
-            throw new ArgumentException($"reach {reach} must be finite and ≥ 0.", nameof(reach));
-        }
-
-        var lands = new Neighbourhood(_registry);
-        if (!Locator.TryFind(_frame, ref lands, worldPosition, cellId, out Place place, nameof(cellId)))
-        {
-            return 0;
-        }
-
-        (LandblockEntry entry, Vector2 p, int index) = (place.Entry, place.Local, place.CellIndex);
-        ObjectSurface[] objects = index >= 0 ? entry.Cells[index].Objects : entry.OutdoorObjects;
-
-        uint best = 0;
-        float bestDistance = reach;
-        foreach (ObjectSurface o in objects)
-        {
-            foreach (WallPolygon w in o.Walls.Polygons)
-            {
-                if (w.ZMax < worldPosition.Z || w.ZMin > worldPosition.Z + 2f)
-                {
-                    continue;
-                }
-
-                float distance = w.IsUpright ? MathF.Sqrt(Geometry.DistanceSquaredToSegment(p, w.A, w.B)) - w.Radius : Vector2.Distance(p, Vector2.Clamp(p, w.Min, w.Max));
-                if (distance <= bestDistance)
-                {
-                    (best, bestDistance) = (o.ObjectId, distance);
-                }
-            }
-        }
-
-        return best;
     }
 }

@@ -142,19 +142,6 @@ public class ObjectSeamCellAndHostTests
     }
 
     [Fact]
-    public void The_host_queries_name_the_objects()
-    {
-        var engine = new PhysicsEngine(TestData.Holtburg);
-        (Setup tree, Dictionary<uint, GfxObj> parts) = ObjectKit.Tree();
-        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), HoltburgCells.Surfaces(), [.. RealObjects.HoltburgBuildings(), new ObjectSurface(tree, parts, ObjectKit.At(new Vector3(100f, 100f, 94f), 0f), 0)]);
-        engine.ObjectWallNear(new Vector3(142.8f, 12f, 94f), 0xA9B40000, 0.5f).Should().Be(ObjectPlacements.CottageShell);
-        engine.ObjectWallNear(new Vector3(143.8f, 12f, 94f), 0xA9B40000, 0.5f).Should().Be(0u, "1.3 m from the wall");
-        engine.ObjectWallNear(new Vector3(100.6f, 100f, 94f), 0xA9B40000, 0.3f).Should().Be(0x02000001u, "0.2 m from the trunk");
-        engine.ObjectWallNear(new Vector3(100.6f, 100f, 94f), 0xA9B40000, 0.1f).Should().Be(0u);
-        engine.ObjectWallNear(new Vector3(142.8f, 12f, 120f), 0xA9B40000, 0.5f).Should().Be(0u, "above the roof");
-    }
-
-    [Fact]
     public void The_cottage_shells_floors_and_walls_are_its_polygons()
     {
         ObjectSurface shell = RealObjects.HoltburgBuildings()[0];

@@ -100,7 +100,7 @@ public class ObjectRestInvariantTests(ITestOutputHelper output)
             targets.AddRange(objects.Select(o => (landblock, (o.BoundsMin + o.BoundsMax) / 2f)));
         }
 
-        int answers = 0, fixedChecked = 0, onObjects = 0, slid = 0, refused = 0;
+        int answers = 0, fixedChecked = 0, onObjects = 0, slid = 0, refused = 0, walls = 0;
         for (int walk = 0; walk < 40; walk++)
         {
             (uint landblock, Vector3 local) = targets[random.Next(targets.Count)];
@@ -134,6 +134,16 @@ public class ObjectRestInvariantTests(ITestOutputHelper output)
                 }
 
                 r.IsOnGround.Should().Be(stands, $"honest ground: {what} → {r}; ground {(found ? ground.ToString("R") : "none")} (object 0x{objectId:X8})");
+
+                // What the move met: the same answer, the floor it stands on, and every wall stop named.
+                ResolveResult reported = engine.Resolve(at.Position, at.CellId, delta, 0.6f, options, out MoveReport report);
+                reported.Should().Be(r, $"the answer with the report: {what}");
+                report.Floor.Kind.Should().Be(!r.IsOnGround ? SurfaceKind.None : objectId != 0 ? SurfaceKind.ObjectFloor : SurfaceKind.Terrain, $"floor: {what} → {r}; {report}");
+                report.Floor.Id.Should().Be(!r.IsOnGround ? 0u : objectId != 0 ? objectId : r.CellId, $"floor id: {what} → {r}; {report}");
+                bool walled = r.Outcome is ResolveOutcome.Wall or ResolveOutcome.OuterWall || (r.Outcome == ResolveOutcome.Slid && r.SurfaceNormal.Z == 0f);
+                report.Wall.Kind.Should().BeOneOf(walled ? [SurfaceKind.ObjectWall, SurfaceKind.BuildingShell, SurfaceKind.Cylinder] : [SurfaceKind.None], $"wall: {what} → {r}; {report}");
+                report.Wall.Normal.Should().Be(walled ? r.SurfaceNormal : Vector3.Zero, $"wall normal: {what} → {r}; {report}");
+                walls += walled ? 1 : 0;
                 onObjects += stands && objectId != 0 ? 1 : 0;
                 if (r.IsOnGround)
                 {
@@ -146,7 +156,7 @@ public class ObjectRestInvariantTests(ITestOutputHelper output)
             }
         }
 
-        output.WriteLine($"{frame}, {effects}: {answers} answers ({fixedChecked} re-resolved in place), {onObjects} on object floors, {slid} slid, {refused} refused");
+        output.WriteLine($"{frame}, {effects}: {answers} answers ({fixedChecked} re-resolved in place), {onObjects} on object floors, {slid} slid, {refused} refused, {walls} wall stops or slides named");
         fixedChecked.Should().BeGreaterThan(answers / 2, "most answers stand on the ground and are re-resolved");
         onObjects.Should().BeGreaterThan(50, "the walks climbed onto object floors");
         if (effects != "literal")

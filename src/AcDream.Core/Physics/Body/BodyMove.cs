@@ -31,6 +31,14 @@ internal struct WallHit
     public float Depth;
     public Vector2 Outward;
 
+    /// <summary>Whose walls are being swept now (set by the sweep before each cell's or object's walls).</summary>
+    public WallSource Current;
+
+    /// <summary>Whose wall the contact so far is (<see cref="T"/>), and whose the deepest overlap (<see cref="Depth"/>).</summary>
+    public WallSource Source;
+
+    public WallSource DeepSource;
+
     /// <summary>No contact and no overlap yet.</summary>
     public static WallHit None => new() { T = 1f };
 
@@ -43,7 +51,7 @@ internal struct WallHit
     {
         if (t < T || (t == T && t < 1f && Precedes(normal, Normal)))
         {
-            (T, Normal) = (t, normal);
+            (T, Normal, Source) = (t, normal, Current);
         }
     }
 
@@ -52,9 +60,16 @@ internal struct WallHit
     {
         if (depth > Depth || (depth == Depth && depth > 0f && Precedes(outward, Outward)))
         {
-            (Depth, Outward) = (depth, outward);
+            (Depth, Outward, DeepSource) = (depth, outward, Current);
         }
     }
 
     private static bool Precedes(Vector2 a, Vector2 b) => a.X > b.X || (a.X == b.X && a.Y > b.Y);
+}
+
+/// <summary>Whose wall a body met: what it is and its id (a cell's, or an object's GfxObj or Setup id).</summary>
+internal readonly record struct WallSource(SurfaceKind Kind, uint Id)
+{
+    /// <summary>An object's walls: its shell's, or an object's.</summary>
+    public static WallSource Of(ObjectSurface o) => new(o.IsBuilding ? SurfaceKind.BuildingShell : SurfaceKind.ObjectWall, o.ObjectId);
 }

@@ -85,7 +85,13 @@ internal sealed class BodyPlanner(WorldFrame frame)
         new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), still.ZLow, still.ZHigh))
             .Sweep(still, ref hit);
         outward = hit.Outward;
-        return hit.Depth - (0.5f * skin);
+        float overlap = hit.Depth - (0.5f * skin);
+        if (overlap > 0f)
+        {
+            q.Meet(hit.DeepSource.Kind, hit.DeepSource.Id);
+        }
+
+        return overlap;
     }
 
     /// <summary>
@@ -117,7 +123,13 @@ internal sealed class BodyPlanner(WorldFrame frame)
         new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(start - new Vector2(reach), start + new Vector2(reach), step.ZLow, step.ZHigh))
             .Sweep(step, ref hit);
         normal = hit.Normal;
-        return (1f - hit.T) * length > PhysicsConstants.ContactTolerance; // stopped short of where the step went: not a rounding of a contact the path ended at
+        if (!((1f - hit.T) * length > PhysicsConstants.ContactTolerance))
+        {
+            return false; // not stopped short of where the step went: a rounding of a contact the path ended at
+        }
+
+        q.Meet(hit.Source.Kind, hit.Source.Id);
+        return true;
     }
 
     /// <summary>The mover's place (<see cref="Locator"/>); false when its landblock is not loaded.</summary>

@@ -45,6 +45,7 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
         }
 
         var wall = new Vector3(path.Normal.X, path.Normal.Y, 0f);
+        q.Meet(path.Wall.Kind, path.Wall.Id);
         if (path.Count == 1)
         {
             return Stopped(ref q, wall);
@@ -73,6 +74,8 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
         {
             return result;
         }
+
+        q.Meet(path.Wall.Kind, path.Wall.Id); // the path's wall, over what its legs met
 
         // A path whose corners the world frame rounds back onto the start (a body at rest against a corner,
         // far from the origin) did not slide: it is stopped.

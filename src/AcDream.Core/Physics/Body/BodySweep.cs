@@ -41,6 +41,9 @@ internal static class BodySweep
 
         /// <summary>The last wall touched: its unit normal seen from above, pointing at the body.</summary>
         public Vector2 Normal;
+
+        /// <summary>Whose the last wall touched is.</summary>
+        public WallSource Wall;
     }
 
     /// <summary>
@@ -77,11 +80,12 @@ internal static class BodySweep
 
             float t = 1f;
             Vector2 normal = default;
+            WallSource wall = default;
             if (contact < PhysicsConstants.MaxBodyContacts)
             {
                 var hit = WallHit.None;
                 walls.Sweep(move.At(position, rest), ref hit);
-                (t, normal) = (hit.T, hit.Normal);
+                (t, normal, wall) = (hit.T, hit.Normal, hit.Source);
                 if (contact == 0 && hit.Depth > sink && hit.Depth < 4f * sink)
                 {
                     // Sunk into the skin by rounding: back out to the contact radius, unless that pushes
@@ -94,8 +98,8 @@ internal static class BodySweep
                         position = pushed;
                         points[path.Count++] = position;
                         path.Contacts++;
-                        path.Normal = hit.Outward;
-                        (t, normal) = (pushedHit.T, pushedHit.Normal);
+                        (path.Normal, path.Wall) = (hit.Outward, hit.DeepSource);
+                        (t, normal, wall) = (pushedHit.T, pushedHit.Normal, pushedHit.Source);
                     }
                 }
             }
@@ -120,7 +124,7 @@ internal static class BodySweep
             }
 
             path.Contacts++;
-            path.Normal = normal;
+            (path.Normal, path.Wall) = (normal, wall);
             rest *= 1f - t;
             if (contact > 0 && travelled < together)
             {
@@ -361,7 +365,17 @@ internal static class BodySweep
                 // A cylinder (Radius > 0) is met at the sum of the radii, and so is its graze: the graze is
                 // measured from the contact radius, else every move coming no nearer the axis than the body's
                 // own graze was taken for a graze and the body walked into the trunk up to its own radius.
-                SweepSegment(in move, wall.A + offset, wall.B + offset, wall.Radius, ref hit);
+                if (wall.Radius > 0f)
+                {
+                    WallSource owner = hit.Current;
+                    hit.Current = owner with { Kind = SurfaceKind.Cylinder };
+                    SweepSegment(in move, wall.A + offset, wall.B + offset, wall.Radius, ref hit);
+                    hit.Current = owner;
+                }
+                else
+                {
+                    SweepSegment(in move, wall.A + offset, wall.B + offset, 0f, ref hit);
+                }
             }
             else
             {

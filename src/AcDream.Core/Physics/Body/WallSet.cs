@@ -240,14 +240,18 @@ internal ref struct WallSet
             Vector2 boxLo = lo - offset, boxHi = hi - offset;
             if ((source & ObjectBit) != 0)
             {
-                BodySweep.SweepWalls(of.OutdoorObjects[index].Walls, offset, boxLo, boxHi, in _move, ref _hit);
+                ObjectSurface outdoors = of.OutdoorObjects[index];
+                _hit.Current = WallSource.Of(outdoors);
+                BodySweep.SweepWalls(outdoors.Walls, offset, boxLo, boxHi, in _move, ref _hit);
                 return true;
             }
 
             CellSurface cell = of.Cells[index];
+            _hit.Current = new WallSource(SurfaceKind.CellWall, cell.CellId);
             BodySweep.SweepWalls(cell.Walls, offset, boxLo, boxHi, in _move, ref _hit);
             foreach (ObjectSurface o in cell.Objects)
             {
+                _hit.Current = WallSource.Of(o);
                 BodySweep.SweepWalls(o.Walls, offset, boxLo, boxHi, in _move, ref _hit);
             }
 

@@ -40,7 +40,7 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
             case Arrival.Floor:
                 return Answers.Land(frame.ToWorld(place.X, place.Y, q.P1, landing.Z), q.Z, entry.Cells[landing.CellIndex].CellId, in q.Options);
             case Arrival.Terrain:
-                LandblockEntry land = q.Outside!;
+                LandblockEntry land = PortalTraversal.Outside(ref q, out _, out _, out _)!;
                 Vector2 local = landing.TerrainLocal;
                 if (q.Options.WalkableSlope && landing.Z > q.Z
                     && land.Terrain.NormalUnchecked(local.X, local.Y) is var normal && normal.Z < PhysicsConstants.FloorZ)
@@ -51,6 +51,11 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
                 return Answers.Land(frame.ToWorld(land.X, land.Y, local, landing.Z), q.Z, WorldFrame.OutdoorCellId(land.X, land.Y, local), in q.Options);
             default:
                 // A wall, a missing cell, unloaded land, or nothing under the mover at all.
+                if (landing.Refusal == ResolveOutcome.Wall && landing.CellIndex >= 0)
+                {
+                    q.Meet(SurfaceKind.CellWall, entry.Cells[landing.CellIndex].CellId);
+                }
+
                 return Refuse(ref q, cell, landing.Refusal, landing.WallNormal);
         }
     }
@@ -65,11 +70,16 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
     private static bool ObjectInTheWay(ref MoveQuery q, CellSurface cell, Landing landing, out ResolveOutcome why, out Vector3 normal)
     {
         var hit = ObjectHit.Over(0f);
-        float h = q.Z + q.StepUp;
-        ObjectGeometry.FirstCrossing(cell.Objects, q.P0, q.P1, h, ref hit);
+        var line = new StepLine(q.P0, q.P1, q.Z + q.StepUp);
+        ObjectQueries.FirstCrossing(cell.Objects, in line, ref hit);
         if (landing.Kind == Arrival.Floor && q.Entry.Cells[landing.CellIndex] is { } there && there != cell)
         {
-            ObjectGeometry.FirstCrossing(there.Objects, q.P0, q.P1, h, ref hit);
+            ObjectQueries.FirstCrossing(there.Objects, in line, ref hit);
+        }
+
+        if (!hit.Rises)
+        {
+            q.Meet(in hit);
         }
 
         (why, normal) = (hit.Rises ? ResolveOutcome.StepTooHigh : ResolveOutcome.Wall, hit.Normal);

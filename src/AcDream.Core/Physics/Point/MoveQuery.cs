@@ -36,9 +36,6 @@ internal ref struct MoveQuery
     /// <summary>Outdoors: the landblock under the mover, as read at the start of the call.</summary>
     public LandblockEntry? Here;
 
-    /// <summary>The landblock of the terrain the portal search last landed on through a door to the outdoors.</summary>
-    public LandblockEntry? Outside;
-
     /// <summary>Outdoors: where the mover stands, as located at the start of the call (a refusal keeps it there).</summary>
     public Standing Stand;
 
@@ -58,6 +55,12 @@ internal ref struct MoveQuery
     /// </summary>
     public bool ObjectStep;
 
+    /// <summary>
+    /// Where the wall a refusal or slide met is recorded (<see cref="Meet(SurfaceKind, uint)"/>), when the caller asked what the move
+    /// met; a null reference otherwise, and then nothing is written.
+    /// </summary>
+    public ref SurfaceContact Met;
+
     public MoveQuery(ref Neighbourhood lands, Vector3 position, uint cellId, Vector2 delta, float stepUp, ref readonly MovementOptions options)
     {
         Lands = ref lands;
@@ -68,7 +71,6 @@ internal ref struct MoveQuery
         Options = ref options;
         Entry = null!;
         Here = null;
-        Outside = null;
         Stand = default;
         P0 = default;
         P1 = default;
@@ -79,7 +81,31 @@ internal ref struct MoveQuery
     public readonly float Z => Position.Z;
 
     /// <summary>A new move of the same call (its landblocks, step and effects) from <paramref name="position"/> in <paramref name="cellId"/> by <paramref name="delta"/>.</summary>
-    public readonly MoveQuery Next(Vector3 position, uint cellId, Vector2 delta) => new(ref Lands, position, cellId, delta, StepUp, in Options);
+    public readonly MoveQuery Next(Vector3 position, uint cellId, Vector2 delta)
+    {
+        var next = new MoveQuery(ref Lands, position, cellId, delta, StepUp, in Options);
+        next.Met = ref Met;
+        return next;
+    }
+
+    /// <summary>Records the wall, shell or cylinder that stops or slides this move (kind and id; the answer gives the normal), when the caller asked.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Meet(SurfaceKind kind, uint id)
+    {
+        if (!Unsafe.IsNullRef(ref Met))
+        {
+            Met = new SurfaceContact(kind, id, default);
+        }
+    }
+
+    /// <summary>Records the wall <paramref name="hit"/> met among objects (<see cref="Meet(SurfaceKind, uint)"/>).</summary>
+    public readonly void Meet(in ObjectHit hit)
+    {
+        if (hit.Wall is ObjectSurface o)
+        {
+            Meet(hit.Cylinder ? SurfaceKind.Cylinder : o.IsBuilding ? SurfaceKind.BuildingShell : SurfaceKind.ObjectWall, o.ObjectId);
+        }
+    }
 
     /// <summary>Checks the arguments of a Resolve call; the exceptions name the spec's parameters.</summary>
     /// <remarks>

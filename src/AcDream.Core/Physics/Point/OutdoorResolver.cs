@@ -108,15 +108,19 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
     private static bool AmongObjects(ref MoveQuery q, float h, ref float groundZ, out bool onObject, out ResolveOutcome why, out Vector3 normal)
     {
         var hit = ObjectHit.Over(groundZ);
-        ObjectGeometry.AmongOutdoors(ref q.Lands, q.Entry, q.P0, q.P1, h, walls: true, floors: true, ref hit);
+        ObjectQueries.AmongOutdoors(ref q.Lands, q.Entry, new StepLine(q.P0, q.P1, h), ObjectPass.Both, ref hit);
         if (q.Here != q.Entry)
         {
-            ObjectGeometry.AmongOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Stand.Local + q.Delta, h, walls: true, floors: false, ref hit);
+            ObjectQueries.AmongOutdoors(ref q.Lands, q.Here!, new StepLine(q.Stand.Local, q.Stand.Local + q.Delta, h), ObjectPass.Walls, ref hit);
         }
 
         if (hit.Wall is null)
         {
-            ObjectGeometry.RaiseToRest(ref q.Lands, q.Entry, q.P1, q.Z, q.StepUp, ref hit);
+            ObjectQueries.RaiseToRest(ref q.Lands, q.Entry, q.P1, q.Z, q.StepUp, ref hit);
+        }
+        else if (!hit.Rises)
+        {
+            q.Meet(in hit);
         }
 
         (groundZ, normal, onObject) = (hit.GroundZ, hit.Normal, hit.Floor is not null);
@@ -132,10 +136,14 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
             return Refuse(ref q, ResolveOutcome.StepTooHigh); // the floor's edge is a step too high
         }
 
-        if (q.Options.DoorsOnly && !q.Entry.Cells[cellIndex].IsShelled
-            && !StartsOverFloor(q.Entry, cellIndex, q.P0, q.Z, q.StepUp) && !TryEnterByDoor(ref q, out cellIndex, out floorZ))
+        if (q.Options.DoorsOnly && !q.Entry.Cells[cellIndex].IsShelled && !StartsOverFloor(q.Entry, cellIndex, q.P0, q.Z, q.StepUp))
         {
-            return Refuse(ref q, ResolveOutcome.OuterWall);
+            uint footprint = q.Entry.Cells[cellIndex].CellId;
+            if (!TryEnterByDoor(ref q, out cellIndex, out floorZ))
+            {
+                q.Meet(SurfaceKind.CellWall, footprint);
+                return Refuse(ref q, ResolveOutcome.OuterWall);
+            }
         }
 
         return Answers.Land(frame.ToWorld(q.Entry.X, q.Entry.Y, q.P1, floorZ), q.Z, q.Entry.Cells[cellIndex].CellId, in q.Options);
@@ -148,8 +156,9 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
     private ResolveResult WalkTerrain(ref MoveQuery q, float terrainZ, bool onObject)
     {
         LandblockEntry there = q.Entry;
-        if (q.Options.DoorsOnly && StepsIntoStorey(there, q.P0, q.Z, q.P1, terrainZ))
+        if (q.Options.DoorsOnly && StepsIntoStorey(there, q.P0, q.Z, q.P1, terrainZ, out int storey))
         {
+            q.Meet(SurfaceKind.CellWall, there.Cells[storey].CellId);
             return Refuse(ref q, ResolveOutcome.OuterWall);
         }
 
@@ -177,7 +186,7 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
     /// rise beyond the step, a refusal), so a move among objects does not pay for it.
     /// </summary>
     private static float GroundHere(ref MoveQuery q) =>
-        ObjectGeometry.GroundOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Z, q.StepUp, q.Stand.GroundZ).GroundZ;
+        ObjectQueries.GroundOutdoors(ref q.Lands, q.Here!, q.Stand.Local, q.Z, q.StepUp, q.Stand.GroundZ).GroundZ;
 
     /// <summary>
     /// Outdoor entry: the floor, among the cells over the candidate's outdoor cell, nearest the
@@ -240,14 +249,16 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
     /// (<see cref="PhysicsConstants.StoreyBelow"/> below to <see cref="PhysicsConstants.StoreyAbove"/> above),
     /// from where it was not. That is through the building's outer wall.
     /// </summary>
-    private static bool StepsIntoStorey(LandblockEntry entry, Vector2 p0, float z0, Vector2 p1, float z1)
+    private static bool StepsIntoStorey(LandblockEntry entry, Vector2 p0, float z0, Vector2 p1, float z1, out int cellIndex)
     {
+        cellIndex = -1;
         foreach (int i in entry.EntryBuckets[CellIds.OutdoorCellNumberUnchecked(p1.X, p1.Y) - 1])
         {
             CellSurface cell = entry.Cells[i];
             if (!cell.IsShelled && cell.TrySampleFloor(p1.X, p1.Y, z1, out float there) && IsStorey(there - z1) && !IsPastOutdoorDoorway(entry, i, p1)
                 && !(cell.TrySampleFloor(p0.X, p0.Y, z0, out float here) && IsStorey(here - z0)))
             {
+                cellIndex = i;
                 return true;
             }
         }

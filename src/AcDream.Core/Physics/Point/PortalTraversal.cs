@@ -13,6 +13,20 @@ namespace AcDream.Core.Physics;
 internal sealed class PortalTraversal
 {
     /// <summary>
+    /// The landblock a move <paramref name="q"/> leaving its cell's landblock through a door to the outdoors ends in
+    /// (as read by this call; null when not loaded), with the end point <paramref name="local"/> in its frame and its
+    /// indices: where every landing on the terrain is.
+    /// </summary>
+    public static LandblockEntry? Outside(ref MoveQuery q, out Vector2 local, out int x, out int y)
+    {
+        local = q.P1;
+        (x, y) = (q.Entry.X, q.Entry.Y);
+        WorldFrame.Wrap(ref local.X, ref x);
+        WorldFrame.Wrap(ref local.Y, ref y);
+        return q.Lands.Get(x, y);
+    }
+
+    /// <summary>
     /// Where the move <paramref name="q"/> (its entry, p0, p1, feet Z and step) ends when it is in
     /// cell <paramref name="hop"/>.Cell: through the first doorway it crosses (after
     /// <paramref name="hop"/>.TStart along the move), else on this cell's floor, else through a floor
@@ -115,7 +129,7 @@ internal sealed class PortalTraversal
             }
         }
 
-        return Landing.Nothing(wallNormal);
+        return Landing.Nothing(hop.Cell, wallNormal);
     }
 
     /// <summary>The cell's own floor at <paramref name="floorZ"/>, or the floor reached up through an opening in its ceiling when that is nearer the feet.</summary>
@@ -164,19 +178,15 @@ internal sealed class PortalTraversal
     {
         if (target == LandblockEntry.MissingCell || hop.Depth >= PhysicsConstants.MaxPortalHops)
         {
-            return Landing.Blocked(ResolveOutcome.Wall);
+            return Landing.Blocked(ResolveOutcome.Wall, hop.Cell);
         }
 
         if (target == LandblockEntry.OutdoorTarget)
         {
-            Vector2 local = q.P1;
-            int x = q.Entry.X, y = q.Entry.Y;
-            WorldFrame.Wrap(ref local.X, ref x);
-            WorldFrame.Wrap(ref local.Y, ref y);
-            LandblockEntry? land = q.Lands.Get(x, y);
+            LandblockEntry? land = Outside(ref q, out Vector2 local, out int x, out int y);
             return land is null
                 ? Landing.Blocked(CellIds.IsInWorld(x, y) ? ResolveOutcome.UnloadedAhead : ResolveOutcome.EdgeOfWorld)
-                : Landing.OnTerrain(ref q, land, local, land.Terrain.SampleZUnchecked(local.X, local.Y));
+                : Landing.OnTerrain(local, land.Terrain.SampleZUnchecked(local.X, local.Y));
         }
 
         return FindLanding(ref q, new Hop(target, hop.Cell, hop.Depth + 1, t, falling));
@@ -210,25 +220,23 @@ internal enum Arrival
 }
 
 /// <summary>
-/// The end of a portal search: a floor, the terrain beyond a door (its landblock is the query's
-/// <see cref="MoveQuery.Outside"/>), or why there is none. No object reference: a landing is a plain
-/// value, so the many a search returns need no zeroing.
+/// The end of a portal search: a floor, the terrain beyond a door (its landblock is
+/// <see cref="PortalTraversal.Outside"/>), or why there is none, with the cell whose wall it met when it
+/// knows it. No object reference: a landing is a plain value, so the many a search returns need no zeroing.
 /// </summary>
 internal readonly record struct Landing(Arrival Kind, int CellIndex, float Z, Vector2 TerrainLocal, ResolveOutcome Refusal, Vector3 WallNormal)
 {
     /// <summary>The <see cref="CellIndex"/> of a landing that is not on a cell's floor (and a first hop's <see cref="Hop.From"/>).</summary>
     public const int NoCell = -1;
 
-    public static Landing Nothing(Vector3 wallNormal) => new(Arrival.Nothing, NoCell, 0f, default, ResolveOutcome.Wall, wallNormal);
+    /// <summary>No floor ahead in cell <paramref name="cell"/> (its index): its wall.</summary>
+    public static Landing Nothing(int cell, Vector3 wallNormal) => new(Arrival.Nothing, cell, 0f, default, ResolveOutcome.Wall, wallNormal);
 
-    public static Landing Blocked(ResolveOutcome why) => new(Arrival.Blocked, NoCell, 0f, default, why, default);
+    /// <summary>Blocked; <paramref name="cell"/> is the index of the cell whose wall (a portal to a cell the engine does not have) it is, when known.</summary>
+    public static Landing Blocked(ResolveOutcome why, int cell = NoCell) => new(Arrival.Blocked, cell, 0f, default, why, default);
 
     public static Landing OnFloor(int cellIndex, float z) => new(Arrival.Floor, cellIndex, z, default, ResolveOutcome.Moved, default);
 
-    /// <summary>On the terrain of <paramref name="land"/> (kept in <paramref name="q"/>) at <paramref name="local"/>.</summary>
-    public static Landing OnTerrain(ref MoveQuery q, LandblockEntry land, Vector2 local, float z)
-    {
-        q.Outside = land;
-        return new(Arrival.Terrain, NoCell, z, local, ResolveOutcome.Moved, default);
-    }
+    /// <summary>On the terrain at <paramref name="local"/> of the landblock outside (<see cref="PortalTraversal.Outside"/>).</summary>
+    public static Landing OnTerrain(Vector2 local, float z) => new(Arrival.Terrain, NoCell, z, local, ResolveOutcome.Moved, default);
 }

@@ -1,0 +1,94 @@
+using System.Numerics;
+using AcDream.App.Fixtures;
+using AcDream.Core.Dat;
+using AcDream.Core.Physics;
+using FluentAssertions;
+using Xunit;
+using Xunit.Abstractions;
+
+using AcDream.Core.Tests.Objects;
+
+namespace AcDream.Core.Tests.Behavior;
+
+/// <summary>
+/// What a move met (<see cref="MoveReport"/>): the floor the answer stands on and the wall, shell or cylinder
+/// that stopped or slid it, named by kind and id, on the real Holtburg buildings and cells and a tree; and the
+/// answer with the report is the answer without it, bit for bit.
+/// </summary>
+public sealed class MoveReportTests(ITestOutputHelper output)
+{
+    private const uint Outdoors = 0xA9B40000;
+    private const uint Tree = 0x02000001;
+
+    private static PhysicsEngine World(uint centre = 0)
+    {
+        var engine = centre == 0 ? new PhysicsEngine() : new PhysicsEngine(centre);
+        (Setup tree, Dictionary<uint, GfxObj> parts) = ObjectKit.Tree();
+        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), HoltburgCells.Surfaces(),
+            [.. RealObjects.HoltburgBuildings(), new ObjectSurface(tree, parts, ObjectKit.At(new Vector3(100f, 100f, 94f), 0f), 0)]);
+        return engine;
+    }
+
+    public static TheoryData<string, MovementOptions, uint> Movers => new()
+    {
+        { "point, global frame", default, 0u },
+        { "player, global frame", MovementOptions.Player, 0u },
+        { "point, centred frame", default, TestData.Holtburg },
+        { "player, centred frame", MovementOptions.Player, TestData.Holtburg },
+    };
+
+    [Theory]
+    [MemberData(nameof(Movers))]
+    public void Walking_into_the_cottage_shell_names_the_shell(string mover, MovementOptions options, uint centre)
+    {
+        PhysicsEngine engine = World(centre);
+        Vector3 start = engine.ToWorld(Outdoors, new Vector3(144.5f, 12f, 94f));
+        ResolveResult r = engine.Resolve(start, Outdoors, new Vector3(-2f, -0.3f, 0f), 0.6f, in options, out MoveReport report);
+        output.WriteLine($"{mover}: {r}; {report}");
+        r.Outcome.Should().BeOneOf([ResolveOutcome.Wall, ResolveOutcome.OuterWall, ResolveOutcome.Slid], mover);
+        report.Wall.Should().Be(new SurfaceContact(SurfaceKind.BuildingShell, ObjectPlacements.CottageShell, r.SurfaceNormal), mover);
+        report.Wall.Normal.X.Should().BeGreaterThan(0.9f, "the shell's east wall faces east");
+        report.Floor.Should().Be(new SurfaceContact(SurfaceKind.Terrain, (TestData.Holtburg & 0xFFFF0000u) | r.CellId & 0xFFFF, Vector3.UnitZ), mover);
+    }
+
+    [Theory]
+    [MemberData(nameof(Movers))]
+    public void Walking_into_a_tree_names_its_cylinder(string mover, MovementOptions options, uint centre)
+    {
+        PhysicsEngine engine = World(centre);
+        Vector3 start = engine.ToWorld(Outdoors, new Vector3(101.5f, 100.05f, 94f));
+        ResolveResult r = engine.Resolve(start, Outdoors, new Vector3(-1.5f, 0f, 0f), 0.6f, in options, out MoveReport report);
+        output.WriteLine($"{mover}: {r}; {report}");
+        r.Outcome.Should().BeOneOf([ResolveOutcome.Wall, ResolveOutcome.Slid], mover);
+        report.Wall.Kind.Should().Be(SurfaceKind.Cylinder, mover);
+        report.Wall.Id.Should().Be(Tree, mover);
+        report.Wall.Normal.Should().Be(r.SurfaceNormal);
+    }
+
+    [Fact]
+    public void Standing_on_the_plinth_a_cell_floor_and_the_terrain_names_each_floor()
+    {
+        PhysicsEngine engine = World();
+        Vector3 onTop = engine.ToWorld(Outdoors, new Vector3(156.25f, 35.41f, 96f));
+        engine.TryGetGround(onTop, Outdoors, 0.5f, out float top, out _, out _).Should().BeTrue();
+        ResolveResult plinth = engine.Resolve(onTop with { Z = top }, Outdoors, new Vector3(0.1f, 0f, 0f), 0.6f, MovementOptions.Player, out MoveReport onPlinth);
+        output.WriteLine($"plinth: {plinth}; {onPlinth}");
+        plinth.IsOnGround.Should().BeTrue();
+        onPlinth.Floor.Kind.Should().Be(SurfaceKind.ObjectFloor);
+        onPlinth.Floor.Id.Should().Be(ObjectPlacements.SmallBuilding);
+        onPlinth.Wall.Should().Be(default(SurfaceContact));
+
+        FloorTriangleInfo t = HoltburgCells.Surface(ObjectPlacements.CottageCellar).GetFloorTriangles()[0];
+        Vector3 centroid = engine.ToWorld(Outdoors, (t.A + t.B + t.C) / 3f);
+        ResolveResult inRoom = engine.Resolve(centroid, ObjectPlacements.CottageCellar, Vector3.Zero, 0.6f, default, out MoveReport inside);
+        output.WriteLine($"cellar at {centroid}: {inRoom}; {inside}");
+        inRoom.IsOnGround.Should().BeTrue();
+        inside.Floor.Kind.Should().Be(SurfaceKind.CellFloor);
+        inside.Floor.Id.Should().Be(ObjectPlacements.CottageCellar);
+        inside.Floor.Normal.Z.Should().BeGreaterThan(0.99f);
+
+        ResolveResult open = engine.Resolve(engine.ToWorld(Outdoors, new Vector3(60f, 60f, 94f)), Outdoors, new Vector3(0.2f, 0f, 0f), 0.6f, default, out MoveReport field);
+        field.Floor.Should().Be(new SurfaceContact(SurfaceKind.Terrain, open.CellId, Vector3.UnitZ));
+        field.Wall.Kind.Should().Be(SurfaceKind.None);
+    }
+}
