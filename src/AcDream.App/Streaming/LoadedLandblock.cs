@@ -8,7 +8,7 @@ namespace AcDream.App.Streaming;
 /// indoor cells, the environments whose cell shapes those cells use, and the landblock's objects as
 /// the dat has them (its <see cref="LandBlockInfo"/>, each cell's <see cref="EnvCell.StaticObjects"/>,
 /// and the GfxObjs and Setups they name). Nothing here is turned into physics yet;
-/// <see cref="GameWindow"/> does that on the frame thread.
+/// <see cref="DatSurfaces"/> does that on the frame thread, for <see cref="GameWindow"/>.
 /// </summary>
 /// <param name="LandBlock">The landblock (<c>0xXXYYFFFF</c>): its 9 × 9 height indices.</param>
 /// <param name="EnvCells">Its indoor cells (<c>0xXXYYCCCC</c>, CCCC 0x0100..0xFFFD); may be empty. Their <see cref="EnvCell.StaticObjects"/> are the objects standing in them.</param>
