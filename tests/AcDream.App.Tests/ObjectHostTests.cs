@@ -34,9 +34,9 @@ public class ObjectHostTests
         z.Should().BeApproximately(96f, 1e-3f);
 
         // Outdoors, 1 m west of the cottage shell's main-block west wall (x 136.3) south of the door, walking east into it.
-        ResolveResult wall = window.Physics.Resolve(new Vector3(135.8f, 3.9f, 94f), 0xA9B40001u, new Vector3(1f, 0f, 0f), 0.5f);
+        ResolveResult wall = window.Physics.Resolve(new Vector3(135.8f, 3.9f, 94f), 0xA9B40001u, new Vector3(1f, 0f, 0f), 0.5f, default, out MoveReport met);
         wall.Position.X.Should().BeLessThan(136.3f, $"the shell's wall stops the move, got {wall.Position} ({wall.Outcome})");
-        window.Physics.ObjectWallNear(wall.Position, wall.CellId, 0.5f).Should().Be(ObjectPlacements.CottageShell);
+        met.Wall.Should().Be(new SurfaceContact(SurfaceKind.BuildingShell, ObjectPlacements.CottageShell, wall.SurfaceNormal), $"{wall}");
 
         ResolveResult door = window.Physics.Resolve(new Vector3(135.5f, 5.15f, 94f), 0xA9B40001u, new Vector3(1f, 0f, 0f), 0.5f);
         door.CellId.Should().Be(0xA9B40145u, "the shell's door opening still leads into the door cell");

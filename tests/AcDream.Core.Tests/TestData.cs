@@ -76,6 +76,20 @@ internal static class HoltburgCells
 
     public static List<CellSurface> Surfaces() => Fixtures.Keys.Order().Select(Surface).ToList();
 
+    /// <summary>
+    /// The real cells on random hills (height index 150–199 at random, 188 on the vertices x 5–6, y 0–1; the
+    /// non-linear table) with the south neighbour flat at 94 m, in the global frame or one centred on Holtburg.
+    /// </summary>
+    public static (PhysicsEngine Engine, TerrainSurface Terrain) OnHills(Random random, string frame)
+    {
+        byte[] heights = TestData.Heights((x, y) => x is >= 5 and <= 6 && y <= 1 ? 188 : random.Next(150, 200));
+        var terrain = new TerrainSurface(heights, TestData.NonLinearTable(), TestData.Holtburg);
+        PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(TestData.Holtburg);
+        engine.AddLandblock(TestData.Holtburg, terrain, Surfaces());
+        engine.AddLandblock(0xA9B3FFFFu, TestData.FlatTerrain(94f, 0xA9B3FFFFu), []);
+        return (engine, terrain);
+    }
+
     private static Dictionary<uint, CellFixtureReader.FixtureCell> Load()
     {
         string folder = Path.Combine(AppContext.BaseDirectory, "Fixtures", "holtburg-cells");

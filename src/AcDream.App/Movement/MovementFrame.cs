@@ -10,4 +10,5 @@ namespace AcDream.App.Movement;
 /// <param name="LastRefusalNormal">The engine's <see cref="ResolveResult.SurfaceNormal"/> of the last refused step (zero when the engine names no surface, or none was refused).</param>
 /// <param name="SlidSteps">Steps the engine answered <see cref="ResolveOutcome.Slid"/>: the body touched a wall (or, with walkable slope, a slope too steep) and moved on along it.</param>
 /// <param name="LastSlideNormal">The engine's <see cref="ResolveResult.SurfaceNormal"/> of the last slid step: a wall's unit normal (horizontal, towards the mover) or a slope's; zero when none slid.</param>
-public readonly record struct MovementFrame(int Steps, int RefusedSteps, ResolveOutcome? LastRefusal, Vector3 LastRefusalNormal, int SlidSteps = 0, Vector3 LastSlideNormal = default);
+/// <param name="Met">What the engine reported the steps met (<see cref="MoveReport"/>): the floor the last step stands on, and the wall, shell or cylinder of the last step that a wall stopped or slid.</param>
+public readonly record struct MovementFrame(int Steps, int RefusedSteps, ResolveOutcome? LastRefusal, Vector3 LastRefusalNormal, int SlidSteps = 0, Vector3 LastSlideNormal = default, MoveReport Met = default);

@@ -5,7 +5,7 @@ namespace AcDream.App.Movement;
 
 /// <summary>
 /// The Phase B.2 seam: each frame turns the player's intent into a horizontal move, resolves it with
-/// <see cref="PhysicsEngine.Resolve(Vector3, uint, Vector3, float, in MovementOptions)"/> and keeps the resulting position and cell. While the engine
+/// <see cref="PhysicsEngine.Resolve(Vector3, uint, Vector3, float, in MovementOptions, out MoveReport)"/> and keeps the resulting position and cell. While the engine
 /// reports no ground, a vertical speed accumulates under gravity and lowers the mover; it lands when
 /// the engine finds ground at the falling mover's height.
 /// </summary>
@@ -142,9 +142,12 @@ public sealed class PlayerMovementMode
         int refused = 0, slid = 0;
         ResolveOutcome? lastRefusal = null;
         Vector3 lastNormal = default, lastSlide = default;
+        SurfaceContact wall = default;
+        MoveReport report = default;
         for (int i = 0; i < steps; i++)
         {
-            ResolveResult result = Step(intent, dt);
+            ResolveResult result = Step(intent, dt, out report);
+            wall = report.Wall.Kind != SurfaceKind.None ? report.Wall : wall;
             if (result.IsRefused)
             {
                 refused++;
@@ -158,11 +161,11 @@ public sealed class PlayerMovementMode
             }
         }
 
-        return new MovementFrame(steps, refused, lastRefusal, lastNormal, slid, lastSlide);
+        return new MovementFrame(steps, refused, lastRefusal, lastNormal, slid, lastSlide, report with { Wall = wall });
     }
 
-    /// <summary>One step of <paramref name="dt"/> seconds; returns the engine's answer.</summary>
-    private ResolveResult Step(MovementIntent intent, float dt)
+    /// <summary>One step of <paramref name="dt"/> seconds; returns the engine's answer and what it met.</summary>
+    private ResolveResult Step(MovementIntent intent, float dt, out MoveReport report)
     {
         Heading += Math.Clamp(intent.Turn, -1f, 1f) * TurnRate * dt;
         (float sin, float cos) = MathF.SinCos(Heading);
@@ -184,7 +187,7 @@ public sealed class PlayerMovementMode
             position.Z += VerticalSpeed * dt;
         }
 
-        ResolveResult result = _engine.Resolve(position, CellId, delta, StepUpHeight, IsOnGround ? Effects : _fallingEffects);
+        ResolveResult result = _engine.Resolve(position, CellId, delta, StepUpHeight, IsOnGround ? Effects : _fallingEffects, out report);
         Position = result.Position;
         CellId = result.CellId;
         IsOnGround = result.IsOnGround;

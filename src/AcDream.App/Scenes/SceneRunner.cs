@@ -22,9 +22,6 @@ internal static class SceneRunner
     /// <summary>Longest wait for one frame's landblock loads before the run gives up: 30 s.</summary>
     private static readonly TimeSpan LoadTimeout = TimeSpan.FromSeconds(30);
 
-    /// <summary>How far beyond the body's radius (or the point) <see cref="PhysicsEngine.ObjectWallNear"/> looks for the object whose wall a frame met, metres: a little more than a run's frame (0.13 m).</summary>
-    public const float WallReach = 0.25f;
-
     /// <summary>Runs <paramref name="scene"/> in its own world (<see cref="Scene.CreateWorld"/>).</summary>
     public static WalkRecord Run(Scene scene, int? maxFrames = null) => Run(scene, scene.CreateWorld(), maxFrames);
 
@@ -124,7 +121,7 @@ internal static class SceneRunner
                 }
 
                 var sample = new FrameSample(frame, mode.Position, mode.CellId, mode.IsOnGround, moved.LastRefusal, slide,
-                    FloorObject(engine, mode), WallObject(engine, mode, moved, slide, scene.Effects));
+                    FloorObject(mode, moved), WallObject(moved, slide));
                 if (before.IsOnGround && sample.IsOnGround && before.Position.Z - sample.Position.Z > PlayerMovementMode.StepUpHeight)
                 {
                     drops.Add(new Drop(frame, before.Position.Z, before.CellId, sample.Position.Z, sample.CellId));
@@ -157,18 +154,18 @@ internal static class SceneRunner
         return engine.Resolve(start with { Z = groundZ }, 0u, Vector3.Zero, PlayerMovementMode.StepUpHeight);
     }
 
-    /// <summary>The object whose floor the mover stands on (the engine's answer for its feet and step), or 0.</summary>
-    private static uint FloorObject(PhysicsEngine engine, PlayerMovementMode mode) =>
-        mode.IsOnGround && engine.TryGetGround(mode.Position, mode.CellId, PlayerMovementMode.StepUpHeight, out _, out _, out uint objectId) ? objectId : 0;
+    /// <summary>The object whose floor the mover stands on after the frame, as the engine reported it, or 0.</summary>
+    private static uint FloorObject(PlayerMovementMode mode, MovementFrame moved) =>
+        mode.IsOnGround && moved.Met.Floor.Kind == SurfaceKind.ObjectFloor ? moved.Met.Floor.Id : 0;
 
     /// <summary>
-    /// For a frame the engine answered Wall, OuterWall or Slid along a wall: the object with a wall
-    /// nearest the mover within its body's radius and <see cref="WallReach"/> (0 when none: a cell's wall).
+    /// For a frame the engine answered Wall, OuterWall or Slid along a wall: the object whose wall, shell or
+    /// cylinder it reported meeting (0 when it was a cell's wall).
     /// </summary>
-    private static uint WallObject(PhysicsEngine engine, PlayerMovementMode mode, MovementFrame moved, Vector3? slide, MovementOptions effects)
+    private static uint WallObject(MovementFrame moved, Vector3? slide)
     {
         bool wall = moved.LastRefusal is ResolveOutcome.Wall or ResolveOutcome.OuterWall || slide is Vector3 { Z: 0f };
-        return wall ? engine.ObjectWallNear(mode.Position, mode.CellId, (effects.Body?.Radius ?? 0f) + WallReach) : 0;
+        return wall && moved.Met.Wall.Kind is SurfaceKind.ObjectWall or SurfaceKind.BuildingShell or SurfaceKind.Cylinder ? moved.Met.Wall.Id : 0;
     }
 
     private static void Wait(GameWindow window)

@@ -10,8 +10,8 @@ namespace AcDream.App.Scenes;
 /// <param name="IsOnGround">On terrain or a floor.</param>
 /// <param name="Refusal">The engine's outcome of this frame's last refused step; null when none was refused.</param>
 /// <param name="Slide">The engine's surface normal of this frame's last step answered <see cref="ResolveOutcome.Slid"/> (a wall's, horizontal, or a slope's); null when none slid.</param>
-/// <param name="FloorObjectId">The object whose floor the mover stands on (<see cref="PhysicsEngine.TryGetGround(Vector3, uint, float, out float, out Vector3, out uint)"/> with the player's step); 0 for the terrain or a cell's floor, or in the air.</param>
-/// <param name="WallObjectId">For a frame refused as Wall or OuterWall or slid along a wall: the object with a wall nearest (<see cref="PhysicsEngine.ObjectWallNear"/>); 0 otherwise or when no object's wall is near.</param>
+/// <param name="FloorObjectId">The object whose floor the mover stands on, as the engine reported it (<see cref="MoveReport.Floor"/>); 0 for the terrain or a cell's floor, or in the air.</param>
+/// <param name="WallObjectId">For a frame refused as Wall or OuterWall or slid along a wall: the object whose wall, shell or cylinder the engine reported it met (<see cref="MoveReport.Wall"/>); 0 otherwise or when it was a cell's wall.</param>
 internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null, uint FloorObjectId = 0, uint WallObjectId = 0);
 
 /// <summary>How a leg ended.</summary>

@@ -6,7 +6,7 @@ using FluentAssertions;
 using Xunit;
 using Xunit.Abstractions;
 
-using AcDream.Core.Tests.Objects;
+using AcDream.Core.Tests.Robustness;
 
 namespace AcDream.Core.Tests.Behavior;
 

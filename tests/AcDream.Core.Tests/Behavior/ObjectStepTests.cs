@@ -1,6 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics;
-using AcDream.Core.Tests.Objects;
+using AcDream.Core.Tests.Robustness;
 using static AcDream.Core.Tests.TestData;
 
 namespace AcDream.Core.Tests.Behavior;

@@ -1,7 +1,7 @@
 using System.Numerics;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
-using AcDream.Core.Tests.Objects;
+using AcDream.Core.Tests.Robustness;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Regression;

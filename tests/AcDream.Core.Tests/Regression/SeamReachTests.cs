@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Robustness;
 using AcDream.Testing;
 using static AcDream.Core.Tests.TestData;
 
@@ -59,8 +60,8 @@ public class SeamReachTests
         const uint east = 0xAAB4FFFFu, northEast = 0xAAB5FFFFu;
         PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(Holtburg);
         engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), []);
-        var tree = Objects.ObjectKit.Tree(0.4f, 5f);
-        ObjectSurface TreeAt(float x, float y) => new(tree.Setup, tree.Parts, Objects.ObjectKit.At(new Vector3(x, y, GroundZ), 0f), 0);
+        var tree = ObjectKit.Tree(0.4f, 5f);
+        ObjectSurface TreeAt(float x, float y) => new(tree.Setup, tree.Parts, ObjectKit.At(new Vector3(x, y, GroundZ), 0f), 0);
         engine.AddLandblock(east, FlatTerrain(GroundZ, east), [], [TreeAt(-1f, 100f)]);
         engine.AddLandblock(east, FlatTerrain(GroundZ, east), [], [TreeAt(-12f, 100f)]); // now 12 m over the seam, at Holtburg x 180
         engine.AddLandblock(northEast, FlatTerrain(GroundZ, northEast), [], [TreeAt(-5f, -5f)]); // at Holtburg (187, 187)
@@ -79,59 +80,5 @@ public class SeamReachTests
 
             at.IsRefused.Should().BeTrue($"{frame}, from {start}: stopped at the tree: {at}");
         }
-    }
-
-    [Fact]
-    public void A_building_or_object_reaching_past_the_seam_reach_is_refused_by_name_and_a_dungeon_is_not()
-    {
-        var engine = new PhysicsEngine(Holtburg);
-        CellSurface building = new CellBuilder(0xA9B40100u, new Vector3(190f, 100f, GroundZ))
-            .Physics(Wall(0f, 0f, 30f, 0f, 0f, 4f))
-            .Portal(0xFFFF, new Vector3(0.5f, 1f, 1f), new(0f, 0.5f, 0f), new(1f, 0.5f, 0f), new(1f, 0.5f, 2f), new(0f, 0.5f, 2f)).Build();
-        Action add = () => engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [building]);
-        add.Should().Throw<ArgumentException>().WithMessage("*cell 0xA9B40100*24 m past*").And.ParamName.Should().Be("cells");
-        engine.LandblockCount.Should().Be(0, "a refused landblock is not registered");
-
-        // A dungeon's cell (no way to the outdoors) may reach anywhere: outdoor movers never meet it.
-        CellSurface dungeon = new CellBuilder(0xA9B40100u, new Vector3(190f, 100f, GroundZ - 30f)).Physics(Wall(0f, 0f, 300f, 0f, 0f, 4f)).Build();
-        engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [dungeon]);
-        engine.LandblockCount.Should().Be(1);
-
-        var tree = Objects.ObjectKit.Tree(0.4f, 5f);
-        Action far = () => engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [],
-            [new ObjectSurface(tree.Setup, tree.Parts, Objects.ObjectKit.At(new Vector3(-30f, 50f, GroundZ), 0f), 0)]);
-        ObjectRefusedException refused = far.Should().Throw<ObjectRefusedException>().WithMessage("*object 0x02000001*").Which;
-        (refused.ParamName, refused.ObjectIndex, refused.ObjectId, refused.Rule).Should().Be(("objects", 0, 0x02000001u, ObjectRule.ReachesPastSeam));
-        engine.LandblockCount.Should().Be(1, "the landblock registered before stays");
-    }
-
-    [Fact]
-    public void A_refused_object_is_named_by_its_index_id_and_rule_so_the_rest_can_be_registered()
-    {
-        var engine = new PhysicsEngine(Holtburg);
-        var tree = Objects.ObjectKit.Tree(0.4f, 5f);
-        ObjectSurface Tree(Vector3 at, uint cellId = 0) => new(tree.Setup, tree.Parts, Objects.ObjectKit.At(at, 0f), cellId);
-        var objects = new List<ObjectSurface> { Tree(new(50f, 50f, GroundZ)), Tree(new(60f, 50f, GroundZ), 0xA9B40150u), Tree(new(-30f, 50f, GroundZ)), Tree(new(70f, 50f, GroundZ)) };
-        var refusals = new List<(int Index, ObjectRule Rule)>();
-        while (true)
-        {
-            try
-            {
-                engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [], objects);
-                break;
-            }
-            catch (ObjectRefusedException e)
-            {
-                e.ObjectId.Should().Be(objects[e.ObjectIndex].ObjectId, e.Message);
-                refusals.Add((e.ObjectIndex, e.Rule));
-                objects.RemoveAt(e.ObjectIndex);
-            }
-        }
-
-        refusals.Should().Equal([(1, ObjectRule.CellNotGiven), (1, ObjectRule.ReachesPastSeam)], "the tree in a cell not given, then the one 30 m past the seam");
-        objects.Should().HaveCount(2);
-        engine.TryGetGround(engine.ToWorld(Holtburg, new Vector3(50f, 50f, GroundZ + 10f)), 0u, 0f, out _, out _, out uint onTree).Should().BeTrue();
-        onTree.Should().Be(0u, "a tree's top is no floor, but the landblock and its two good trees are registered");
-        engine.LandblockCount.Should().Be(1);
     }
 }

@@ -26,7 +26,7 @@ public class CornerTests(ITestOutputHelper output)
     {
         var random = new Random(player ? 43 : 41);
         PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(Holtburg);
-        var tree = Objects.ObjectKit.Tree(Trunk, 5f);
+        var tree = ObjectKit.Tree(Trunk, 5f);
         var trunks = new List<(Vector2 Centre, int Landblock)>(); // Holtburg-local
         for (int lb = 0; lb < Landblocks.Length; lb++)
         {
@@ -36,7 +36,7 @@ public class CornerTests(ITestOutputHelper output)
             {
                 // Within 8 m of the corner (192, 192) of Holtburg's frame, on this landblock's side of it or up to 1.5 m past.
                 Vector2 local = new Vector2(192f, 192f) - shift + new Vector2(Side(random, lb & 1), Side(random, lb >> 1));
-                objects.Add(new ObjectSurface(tree.Setup, tree.Parts, Objects.ObjectKit.At(new Vector3(local, GroundZ), 0f), 0));
+                objects.Add(new ObjectSurface(tree.Setup, tree.Parts, ObjectKit.At(new Vector3(local, GroundZ), 0f), 0));
                 trunks.Add((local + shift, lb));
             }
 

@@ -2,7 +2,6 @@ using System.Numerics;
 using AcDream.App.Fixtures;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
-using AcDream.Core.Tests.Objects;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Robustness;

@@ -2,7 +2,6 @@ using System.Diagnostics;
 using System.Numerics;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
-using AcDream.Core.Tests.Objects;
 using AcDream.Testing;
 using Xunit.Abstractions;
 using static AcDream.Core.Tests.TestData;

@@ -2,10 +2,11 @@ using System.Numerics;
 using AcDream.App.Fixtures;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Behavior;
 using AcDream.Testing;
 using Xunit.Abstractions;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
 /// Seeded random placements of the real objects, against a double-precision reference built from the

@@ -3,7 +3,7 @@ using AcDream.Core.Dat;
 using AcDream.Core.Physics;
 using Xunit.Abstractions;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
 /// The one-bit skip against the fine grid itself, at the coordinates where it could go wrong: starts on

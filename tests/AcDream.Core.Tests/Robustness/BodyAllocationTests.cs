@@ -4,7 +4,7 @@ using AcDream.Testing;
 using Xunit.Abstractions;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Body;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
 /// A <c>Resolve</c> with a body allocates nothing in steady state: indoors sliding along a wall and

@@ -2,13 +2,21 @@ using System.Numerics;
 using AcDream.App.Fixtures;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Robustness;
+using AcDream.Testing;
+using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Api;
 
-/// <summary>Bad object data is an <see cref="ArgumentException"/> naming the object and what is wrong, and changes nothing.</summary>
+/// <summary>
+/// Bad object data is an <see cref="ArgumentException"/> naming the object and what is wrong, and changes nothing;
+/// so is a building or object reaching past the seam reach, named by its index, id and rule.
+/// </summary>
 public class ObjectBadDataTests
 {
     private const uint Id = 0x01000123;
+
+    private const float GroundZ = 94f;
 
     private static readonly Frame Here = ObjectKit.At(new Vector3(50f, 50f, 10f), 0.3f);
 
@@ -180,5 +188,59 @@ public class ObjectBadDataTests
 
         engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), [], many.Take(PhysicsConstants.MaxOutdoorObjects).ToList());
         engine.ContainsLandblock(TestData.Holtburg).Should().BeTrue("exactly the limit is accepted");
+    }
+
+    [Fact]
+    public void A_building_or_object_reaching_past_the_seam_reach_is_refused_by_name_and_a_dungeon_is_not()
+    {
+        var engine = new PhysicsEngine(Holtburg);
+        CellSurface building = new CellBuilder(0xA9B40100u, new Vector3(190f, 100f, GroundZ))
+            .Physics(Wall(0f, 0f, 30f, 0f, 0f, 4f))
+            .Portal(0xFFFF, new Vector3(0.5f, 1f, 1f), new(0f, 0.5f, 0f), new(1f, 0.5f, 0f), new(1f, 0.5f, 2f), new(0f, 0.5f, 2f)).Build();
+        Action add = () => engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [building]);
+        add.Should().Throw<ArgumentException>().WithMessage("*cell 0xA9B40100*24 m past*").And.ParamName.Should().Be("cells");
+        engine.LandblockCount.Should().Be(0, "a refused landblock is not registered");
+
+        // A dungeon's cell (no way to the outdoors) may reach anywhere: outdoor movers never meet it.
+        CellSurface dungeon = new CellBuilder(0xA9B40100u, new Vector3(190f, 100f, GroundZ - 30f)).Physics(Wall(0f, 0f, 300f, 0f, 0f, 4f)).Build();
+        engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [dungeon]);
+        engine.LandblockCount.Should().Be(1);
+
+        var tree = ObjectKit.Tree(0.4f, 5f);
+        Action far = () => engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [],
+            [new ObjectSurface(tree.Setup, tree.Parts, ObjectKit.At(new Vector3(-30f, 50f, GroundZ), 0f), 0)]);
+        ObjectRefusedException refused = far.Should().Throw<ObjectRefusedException>().WithMessage("*object 0x02000001*").Which;
+        (refused.ParamName, refused.ObjectIndex, refused.ObjectId, refused.Rule).Should().Be(("objects", 0, 0x02000001u, ObjectRule.ReachesPastSeam));
+        engine.LandblockCount.Should().Be(1, "the landblock registered before stays");
+    }
+
+    [Fact]
+    public void A_refused_object_is_named_by_its_index_id_and_rule_so_the_rest_can_be_registered()
+    {
+        var engine = new PhysicsEngine(Holtburg);
+        var tree = ObjectKit.Tree(0.4f, 5f);
+        ObjectSurface Tree(Vector3 at, uint cellId = 0) => new(tree.Setup, tree.Parts, ObjectKit.At(at, 0f), cellId);
+        var objects = new List<ObjectSurface> { Tree(new(50f, 50f, GroundZ)), Tree(new(60f, 50f, GroundZ), 0xA9B40150u), Tree(new(-30f, 50f, GroundZ)), Tree(new(70f, 50f, GroundZ)) };
+        var refusals = new List<(int Index, ObjectRule Rule)>();
+        while (true)
+        {
+            try
+            {
+                engine.AddLandblock(Holtburg, FlatTerrain(GroundZ), [], objects);
+                break;
+            }
+            catch (ObjectRefusedException e)
+            {
+                e.ObjectId.Should().Be(objects[e.ObjectIndex].ObjectId, e.Message);
+                refusals.Add((e.ObjectIndex, e.Rule));
+                objects.RemoveAt(e.ObjectIndex);
+            }
+        }
+
+        refusals.Should().Equal([(1, ObjectRule.CellNotGiven), (1, ObjectRule.ReachesPastSeam)], "the tree in a cell not given, then the one 30 m past the seam");
+        objects.Should().HaveCount(2);
+        engine.TryGetGround(engine.ToWorld(Holtburg, new Vector3(50f, 50f, GroundZ + 10f)), 0u, 0f, out _, out _, out uint onTree).Should().BeTrue();
+        onTree.Should().Be(0u, "a tree's top is no floor, but the landblock and its two good trees are registered");
+        engine.LandblockCount.Should().Be(1);
     }
 }

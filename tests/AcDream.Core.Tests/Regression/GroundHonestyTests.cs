@@ -3,7 +3,7 @@ using AcDream.Core.Physics;
 using AcDream.Testing;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Robustness;
+namespace AcDream.Core.Tests.Regression;
 
 /// <summary>
 /// Issue 8, defects 1, 2, 4 and 9: a refused move never reports ground in mid-air, an accepted move

@@ -4,7 +4,7 @@ using AcDream.Testing;
 using Xunit.Abstractions;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Body;
+namespace AcDream.Core.Tests.Regression;
 
 /// <summary>
 /// The body's open-ground shortcut beside a seam: a neighbour's building cell whose walls reach across the

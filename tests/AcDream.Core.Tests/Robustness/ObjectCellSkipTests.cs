@@ -4,7 +4,7 @@ using AcDream.Core.Physics;
 using AcDream.Testing;
 using Xunit.Abstractions;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
 /// A move far from every object skips the objects by one bit of its outdoor cell (objects on the cell

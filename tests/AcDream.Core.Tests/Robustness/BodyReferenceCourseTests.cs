@@ -2,7 +2,7 @@ using System.Numerics;
 using AcDream.Core.Physics;
 using AcDream.Testing;
 
-namespace AcDream.Core.Tests.Body;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
 /// Seeded random courses (rooms, corridors, an L-shaped room with a diagonal corner, two rooms with a

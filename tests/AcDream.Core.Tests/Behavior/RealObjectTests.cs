@@ -2,9 +2,10 @@ using System.Numerics;
 using AcDream.App.Fixtures;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Robustness;
 using Xunit.Abstractions;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>The real objects: the cottage's shell with the Holtburg cells, the outdoor staircase, the small building on its plinth.</summary>
 public class RealObjectTests(ITestOutputHelper output)

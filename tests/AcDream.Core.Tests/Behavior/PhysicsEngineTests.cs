@@ -2,7 +2,7 @@ using System.Numerics;
 using AcDream.Core.Physics;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Physics;
+namespace AcDream.Core.Tests.Behavior;
 
 public class PhysicsEngineTests
 {

@@ -3,7 +3,7 @@ using AcDream.Core.Physics;
 using FluentAssertions;
 using Xunit;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>First checks of objects on the real data: the cottage's shell and the outdoor staircase.</summary>
 public class ObjectSmokeTests

@@ -3,7 +3,7 @@ using AcDream.Core.Dat;
 using AcDream.Core.Physics;
 using AcDream.Testing;
 
-namespace AcDream.Core.Tests.Body;
+namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>Sliding along walls frame after frame, corners concave and convex, against <see cref="ReferenceBody"/>.</summary>
 public class BodySlideTests

@@ -7,7 +7,7 @@ using AcDream.Core.Physics;
 using FluentAssertions;
 using Xunit;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>
 /// The two cellar stairs of Holtburg (<see cref="ObjectPlacements.CellarStairs"/>): each cellar is reached

@@ -4,7 +4,7 @@ using AcDream.Core.Dat;
 using AcDream.Core.Physics;
 using Xunit.Abstractions;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
 /// The answers' invariants among objects, in both world frames (fixed point, honest ground, no NaN);

@@ -3,7 +3,7 @@ using AcDream.Core.Dat;
 using AcDream.Core.Physics;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Physics;
+namespace AcDream.Core.Tests.Behavior;
 
 public class CellSurfaceTests
 {

@@ -3,7 +3,7 @@ using AcDream.Core.Dat;
 using AcDream.Core.Physics;
 using AcDream.Testing;
 
-namespace AcDream.Core.Tests.Body;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
 /// Fast movers into walls: 1, 5, 10, 20 and 50 m/s at 30 Hz and 10 Hz (up to 5 m per call), into a

@@ -3,7 +3,7 @@ using AcDream.Core.Physics;
 using AcDream.Testing;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Body;
+namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>
 /// The body on the real Holtburg cells (flat terrain at the cottages' floor height, 94 m): every doorway

@@ -1,95 +1,14 @@
 using System.Numerics;
 using AcDream.Core.Physics;
-using AcDream.Testing;
-using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Body;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
-/// The body is free when it is off and changes nothing where it touches nothing; and its answers keep
-/// the two invariants every answer keeps (issue 8): a fixed point under a zero move, and honest ground.
+/// With a body, answers keep the two invariants every answer keeps (issue 8): a fixed point under a zero
+/// move, and honest ground. Random walks on hills around the real Holtburg cells and through them.
 /// </summary>
-public class BodyDefaultTests
+public class BodyAnswerInvariantTests
 {
-    /// <summary>Hilly terrain around the real Holtburg cells (as the default-options test of the point engine), in a frame.</summary>
-    private static (PhysicsEngine Engine, TerrainSurface Terrain) Holtburg(Random random, string frame)
-    {
-        byte[] heights = Heights((x, y) => x is >= 5 and <= 6 && y <= 1 ? 188 : random.Next(150, 200));
-        var terrain = new TerrainSurface(heights, NonLinearTable(), TestData.Holtburg);
-        PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(TestData.Holtburg);
-        engine.AddLandblock(TestData.Holtburg, terrain, HoltburgCells.Surfaces());
-        engine.AddLandblock(0xA9B3FFFFu, FlatTerrain(94f, 0xA9B3FFFFu), []);
-        return (engine, terrain);
-    }
-
-    [Theory]
-    [InlineData("centred")]
-    [InlineData("global")]
-    public void Resolve_NoBody_BitIdenticalToTheLiteralCall(string frame)
-    {
-        // As MovementOptionsTests.Resolve_DefaultOptions_BitIdenticalToLiteralCall, with the body named
-        // and absent: 5,000 random movers outdoors and in every real cell.
-        var random = new Random(5);
-        (PhysicsEngine engine, _) = Holtburg(random, frame);
-        Vector3 origin = engine.GetLandblockOrigin(TestData.Holtburg);
-        uint[] cells = [.. HoltburgCells.Fixtures.Keys];
-        for (int n = 0; n < 5000; n++)
-        {
-            bool indoor = n % 2 == 1;
-            uint cell = indoor ? cells[random.Next(cells.Length)] : 0xA9B40000u;
-            var pos = origin + new Vector3(
-                indoor ? 124 + (float)(random.NextDouble() * 42) : (float)(random.NextDouble() * 192),
-                indoor ? -1 + (float)(random.NextDouble() * 21) : (float)(random.NextDouble() * 192),
-                85 + (float)(random.NextDouble() * 60));
-            var delta = new Vector3((float)(random.NextDouble() * 4) - 2, (float)(random.NextDouble() * 4) - 2, 0);
-            float step = (float)(random.NextDouble() * 2);
-
-            ResolveResult literal = engine.Resolve(pos, cell, delta, step);
-            string what = $"case {n}: {pos} in 0x{cell:X8} moving {delta}, step {step}";
-            engine.Resolve(pos, cell, delta, step, new MovementOptions { Body = null }).Should().Be(literal, what);
-            engine.Resolve(pos, cell, delta, step, MovementOptions.Literal with { Body = null }).Should().Be(literal, what);
-            engine.Resolve(pos, cell, delta, step, default).Should().Be(literal, what);
-        }
-    }
-
-    [Theory]
-    [InlineData("centred")]
-    [InlineData("global")]
-    public void Resolve_BodyTouchingNothing_BitIdenticalToNoBody(string frame)
-    {
-        // Outdoors on the hills, 25 m and more from any building, moves no longer than a sweep step: with or
-        // without the player's body every effect gives the same answer, bit for bit (the body's path with no
-        // contact is the point move itself; a longer swept one aims its sub-steps along the path instead).
-        // Walkable slope is left out: with a body a slope too steep to climb is slid along, by design.
-        var random = new Random(6);
-        (PhysicsEngine engine, _) = Holtburg(random, frame);
-        Vector3 origin = engine.GetLandblockOrigin(TestData.Holtburg);
-        MovementOptions[] configurations =
-        [
-            default,
-            new() { StepDownHeight = 1.5f },
-            new() { SweepStepLength = 0.48f },
-            new() { DoorsOnly = true },
-            MovementOptions.Player with { Body = null, WalkableSlope = false },
-        ];
-        int compared = 0;
-        for (int n = 0; n < 3000; n++)
-        {
-            var local = new Vector2((float)(random.NextDouble() * 110), 30 + (float)(random.NextDouble() * 160));
-            var pos = origin + new Vector3(local, 80 + (float)(random.NextDouble() * 80));
-            double angle = random.NextDouble() * 2 * Math.PI, length = random.NextDouble() * 0.47; // within one sweep step
-            var delta = new Vector3((float)(Math.Cos(angle) * length), (float)(Math.Sin(angle) * length), 0);
-            float step = (float)(random.NextDouble() * 2);
-            MovementOptions point = configurations[n % configurations.Length];
-            ResolveResult without = engine.Resolve(pos, 0xA9B40000u, delta, step, point);
-            ResolveResult with = engine.Resolve(pos, 0xA9B40000u, delta, step, point with { Body = MoverBody.Player });
-            with.Should().Be(without, $"case {n}: {pos} moving {delta}, step {step}, {point}");
-            compared++;
-        }
-
-        compared.Should().Be(3000);
-    }
-
     public static TheoryData<int, string, string> Invariants() => new()
     {
         { 21, "centred", "body" }, { 21, "global", "body" }, { 22, "centred", "body + step down" }, { 22, "global", "player" },
@@ -104,7 +23,7 @@ public class BodyDefaultTests
         // and airborne ones with step down), and IsOnGround is true exactly when the returned Z is within
         // the ground tolerance of the terrain or floor under the returned XY.
         var random = new Random(seed);
-        (PhysicsEngine engine, TerrainSurface terrain) = Holtburg(random, frame);
+        (PhysicsEngine engine, TerrainSurface terrain) = HoltburgCells.OnHills(random, frame);
         MovementOptions options = effects switch
         {
             "body" => new MovementOptions { Body = MoverBody.Player },

@@ -3,7 +3,7 @@ using AcDream.Core.Physics;
 using AcDream.Testing;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Body;
+namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>First checks of the body: a slide along a wall, a stop in a corner, no tunnelling at speed.</summary>
 public class BodySmokeTests

@@ -1,7 +1,7 @@
 using AcDream.Core.Physics;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Physics;
+namespace AcDream.Core.Tests.Behavior;
 
 public class TerrainSurfaceTests
 {

@@ -1,12 +1,12 @@
 using System.Numerics;
-using AcDream.App.Fixtures;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Robustness;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Behavior;
 
-/// <summary>Objects at a landblock seam and inside a cell; the host queries and the surfaces seen by callers.</summary>
-public class ObjectSeamCellAndHostTests
+/// <summary>Objects at a landblock seam and inside a cell.</summary>
+public class ObjectSeamAndCellTests
 {
     private const uint West = 0x5050FFFF;
     private const uint EastLb = 0x5150FFFF;
@@ -139,42 +139,6 @@ public class ObjectSeamCellAndHostTests
             at = engine.Resolve(at.Position, at.CellId, new Vector3(0.1f, 0f, 0f), 0.3f, options);
             at.Position.Z.Should().Be(94f, $"{mover}, step 0.3, move {i}: {at}");
         }
-    }
-
-    [Fact]
-    public void The_cottage_shells_floors_and_walls_are_its_polygons()
-    {
-        ObjectSurface shell = RealObjects.HoltburgBuildings()[0];
-        shell.ObjectId.Should().Be(ObjectPlacements.CottageShell);
-        shell.IsBuilding.Should().BeTrue();
-        shell.DoorCellIds.Should().Equal(0xA9B40145, 0xA9B4014C, 0xA9B4014E, 0xA9B4014F);
-        List<RefFloor> polygons = ObjectKit.Floors(RealObjects.GfxObjs[ObjectPlacements.CottageShell], ObjectPlacements.Cottage().Frame);
-        polygons.Should().HaveCount(74);
-        shell.GetWalls().Should().HaveCount(69, "74 physics polygons less the 5 walkable ones");
-        FloorTriangleInfo[] triangles = shell.GetFloorTriangles();
-        double area = triangles.Sum(t => Math.Abs(Vector3.Cross(t.B - t.A, t.C - t.A).Z) / 2);
-        double expected = polygons.Where(p => p.Walkable).Sum(p => Math.Abs(AreaXY(p)));
-        area.Should().BeApproximately(expected, 1e-3, "the floor triangles cover exactly the walkable polygons (roof top z 102, chimney top z 104)");
-        triangles.Select(t => MathF.Round(t.A.Z, 3)).Distinct().Should().BeEquivalentTo(new[] { 102f, 104f });
-        shell.BoundsMin.X.Should().BeApproximately(122.5f, 1e-3f);
-        shell.BoundsMax.X.Should().BeApproximately(142.5f, 1e-3f);
-        shell.BoundsMin.Y.Should().BeApproximately(3.5f, 1e-3f);
-        shell.BoundsMax.Y.Should().BeApproximately(19.5f, 1e-3f);
-        shell.BoundsMin.Z.Should().BeApproximately(94f, 1e-3f);
-        shell.BoundsMax.Z.Should().BeApproximately(104f, 1e-3f);
-    }
-
-    private static double AreaXY(RefFloor p)
-    {
-        double a = 0;
-        for (int i = 0; i < p.V.Length; i++)
-        {
-            var u = p.V[i];
-            var v = p.V[(i + 1) % p.V.Length];
-            a += (u.X * v.Y) - (v.X * u.Y);
-        }
-
-        return a / 2;
     }
 
     [Theory]

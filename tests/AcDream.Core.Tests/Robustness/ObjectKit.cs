@@ -2,7 +2,7 @@ using System.Numerics;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>Builders for synthetic objects, and a double-precision reference for object floors.</summary>
 internal static class ObjectKit

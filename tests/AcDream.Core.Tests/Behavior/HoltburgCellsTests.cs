@@ -2,7 +2,7 @@ using System.Numerics;
 using AcDream.Core.Physics;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Physics;
+namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>The real Holtburg cells (landblock 0xA9B4), on flat terrain at the cottage's floor height.</summary>
 public class HoltburgCellsTests

@@ -1,12 +1,11 @@
 using System.Numerics;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
-using AcDream.Core.Tests.Objects;
 using AcDream.Testing;
 using Xunit.Abstractions;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Body;
+namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>
 /// The body's open-ground shortcut: where no wall lies in the box the body sweeps (its start and end

@@ -2,9 +2,9 @@ using System.Numerics;
 using AcDream.Core.Physics;
 using static AcDream.Core.Tests.TestData;
 
-namespace AcDream.Core.Tests.Physics;
+namespace AcDream.Core.Tests.Behavior;
 
-/// <summary>The opt-in effects: each off and on, and the defaults identical to the literal call.</summary>
+/// <summary>The opt-in effects: each off and on.</summary>
 public class MovementOptionsTests
 {
     private const float Step = 0.5f;
@@ -16,37 +16,6 @@ public class MovementOptionsTests
         engine.AddLandblock(Holtburg, terrain ?? FlatTerrain(GroundZ), HoltburgCells.Surfaces());
         engine.AddLandblock(0xA9B3FFFFu, FlatTerrain(GroundZ, 0xA9B3FFFFu), []);
         return engine;
-    }
-
-    [Fact]
-    public void Resolve_DefaultOptions_BitIdenticalToLiteralCall()
-    {
-        // Hilly terrain around the real cells; random movers outdoors and in every cell.
-        var random = new Random(5);
-        byte[] heights = Heights((x, y) => x is >= 5 and <= 6 && y <= 1 ? 188 : random.Next(150, 200));
-        PhysicsEngine engine = HoltburgEngine(new TerrainSurface(heights, NonLinearTable(), Holtburg));
-        uint[] cells = [.. HoltburgCells.Fixtures.Keys];
-        int compared = 0;
-        for (int n = 0; n < 5000; n++)
-        {
-            bool indoor = n % 2 == 1;
-            uint cell = indoor ? cells[random.Next(cells.Length)] : 0xA9B40000u;
-            var pos = new Vector3(
-                indoor ? 124 + (float)(random.NextDouble() * 42) : (float)(random.NextDouble() * 192),
-                indoor ? -1 + (float)(random.NextDouble() * 21) : (float)(random.NextDouble() * 192),
-                85 + (float)(random.NextDouble() * 60));
-            var delta = new Vector3((float)(random.NextDouble() * 4) - 2, (float)(random.NextDouble() * 4) - 2, 0);
-            float step = (float)(random.NextDouble() * 2);
-
-            ResolveResult literal = engine.Resolve(pos, cell, delta, step);
-            ResolveResult withDefaults = engine.Resolve(pos, cell, delta, step, default);
-            ResolveResult withLiteral = engine.Resolve(pos, cell, delta, step, MovementOptions.Literal);
-            withDefaults.Should().Be(literal, $"case {n}: {pos} in 0x{cell:X8} moving {delta}, step {step}");
-            withLiteral.Should().Be(literal);
-            compared++;
-        }
-
-        compared.Should().Be(5000);
     }
 
     /// <summary>Terrain with a 20 m cliff: x ≤ 96 at 20 + 94 m, beyond it 94 m (a 20 m drop over one 24 m cell).</summary>
@@ -228,19 +197,6 @@ public class MovementOptionsTests
         // North door of building B (0x0170), whose outdoor portal leans ~6°.
         ResolveResult b = engine.Resolve(new Vector3(155.4f, 16.5f, GroundZ), 0, new Vector3(0, -0.6f, 0), Step, options);
         b.CellId.Should().Be(0xA9B40170u);
-    }
-
-    [Fact]
-    public void Options_InvalidValues_ThrowAtConstruction()
-    {
-        FluentActions.Invoking(() => new MovementOptions { StepDownHeight = -1f })
-            .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("StepDownHeight");
-        FluentActions.Invoking(() => new MovementOptions { StepDownHeight = float.NaN })
-            .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("StepDownHeight");
-        FluentActions.Invoking(() => new MovementOptions { SweepStepLength = 0f })
-            .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("SweepStepLength");
-        FluentActions.Invoking(() => new MovementOptions { SweepStepLength = float.PositiveInfinity })
-            .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("SweepStepLength");
     }
 
     [Fact]

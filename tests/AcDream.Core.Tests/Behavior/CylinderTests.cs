@@ -1,8 +1,9 @@
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Robustness;
 using Xunit.Abstractions;
 
-namespace AcDream.Core.Tests.Objects;
+namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>A tree: a Setup whose one part has no polygons and whose cylinder (radius 0.4, height 5) is its trunk.</summary>
 public class CylinderTests(ITestOutputHelper output)
