@@ -58,7 +58,8 @@ public sealed partial class PhysicsEngine
     /// <param name="normal">The ground's unit normal (pointing up).</param>
     /// <param name="objectId">The GfxObj or Setup id of the object whose floor it is; 0 for the terrain or a cell's floor.</param>
     /// <returns>False when the landblock is not loaded, or nothing lies under the position.</returns>
-    /// <exception cref="ArgumentException">A coordinate or the step is not finite, the step is negative, or the indoor cell is not in its loaded landblock (as <c>Resolve</c>).</exception>
+    /// <exception cref="ArgumentOutOfRangeException">The step is not finite or is negative (as <c>Resolve</c>).</exception>
+    /// <exception cref="ArgumentException">A coordinate is not finite, or the indoor cell is not in its loaded landblock (as <c>Resolve</c>).</exception>
     public bool TryGetGround(Vector3 worldPosition, uint cellId, float stepUpHeight, out float groundZ, out Vector3 normal, out uint objectId)
     {
         if (!Geometry.IsFinite(worldPosition))
@@ -68,7 +69,7 @@ public sealed partial class PhysicsEngine
 
         if (!(stepUpHeight >= 0f) || !float.IsFinite(stepUpHeight))
         {
-            throw new ArgumentException($"step height {stepUpHeight} must be finite and ≥ 0.", nameof(stepUpHeight));
+            throw new ArgumentOutOfRangeException(nameof(stepUpHeight), stepUpHeight, "stepUpHeight must be a finite height ≥ 0 m."); // as Resolve
         }
 
         (groundZ, normal, objectId) = (0f, default, 0u);

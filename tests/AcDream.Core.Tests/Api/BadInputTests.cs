@@ -111,6 +111,12 @@ public class BadInputTests
             .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("stepUpHeight");
         FluentActions.Invoking(() => engine.Resolve(pos, 0, Vector3.Zero, -0.1f))
             .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("stepUpHeight");
+        FluentActions.Invoking(() => engine.Resolve(pos, 0, Vector3.Zero, -0.1f, MovementOptions.Player, out _))
+            .Should().Throw<ArgumentOutOfRangeException>("the report overload checks as the others").WithParameterName("stepUpHeight");
+        FluentActions.Invoking(() => engine.TryGetGround(pos, 0, -0.1f, out _, out _, out _))
+            .Should().Throw<ArgumentOutOfRangeException>("the ground query's step is checked as Resolve's").WithParameterName("stepUpHeight");
+        FluentActions.Invoking(() => engine.TryGetGround(pos, 0, float.NaN, out _, out _, out _))
+            .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("stepUpHeight");
         FluentActions.Invoking(() => engine.Resolve(pos, 0xA9B40041u, Vector3.Zero, 0.5f))
             .Should().Throw<ArgumentException>().WithParameterName("currentCellId").WithMessage("*0xA9B40041*");
         FluentActions.Invoking(() => engine.Resolve(pos, 0xA9B4FFFEu, Vector3.Zero, 0.5f))

@@ -80,6 +80,10 @@ public class BodyAllocationTests(ITestOutputHelper output)
             // The real cells' floors, 0.1 to 2.4 m moves in eight directions with the player's options
             // (walls gathered through portals; some starts overlap a wall, as a teleported mover might).
             ("real Holtburg cells", i => Real(holtburg, floors[(i * 7919) % floors.Count], i), []),
+
+            // The same with what each move met (the report overload).
+            ("real Holtburg cells, with the report", i => Reported(holtburg, floors[(i * 7919) % floors.Count], i), []),
+            ("indoor slide along a wall, with the report", i => room.Resolve(corner + new Vector3(9.4f, 2f + (i % 50 * 0.1f), 0), roomCell, new Vector3(0.3f, 0.2f, 0), Step, BodyAlone, out _), [ResolveOutcome.Slid]),
         };
 
         foreach ((string name, Func<int, ResolveResult> call, ResolveOutcome[] expected) in scenarios)
@@ -117,6 +121,13 @@ public class BodyAllocationTests(ITestOutputHelper output)
     {
         float angle = i % 8 * MathF.PI / 4f, length = 0.1f + (i % 9 * 0.3f);
         return engine.Resolve(start.Position, start.Cell, new Vector3(length * MathF.Cos(angle), length * MathF.Sin(angle), 0), Step, MovementOptions.Player);
+    }
+
+    private static ResolveResult Reported(PhysicsEngine engine, (Vector3 Position, uint Cell) start, int i)
+    {
+        float angle = i % 8 * MathF.PI / 4f, length = 0.1f + (i % 9 * 0.3f);
+        ResolveResult r = engine.Resolve(start.Position, start.Cell, new Vector3(length * MathF.Cos(angle), length * MathF.Sin(angle), 0), Step, MovementOptions.Player, out MoveReport report);
+        return r with { CellId = r.CellId ^ report.Floor.Id ^ report.Wall.Id }; // the report read, so it is not optimised away
     }
 
     private static float Run(Func<int, ResolveResult> call)

@@ -20,10 +20,14 @@ internal sealed class BodyPlanner(WorldFrame frame)
     [SkipLocalsInit] // the stack buffers are written before they are read
     public bool Plan(ref MoveQuery q, MoverBody body, scoped Span<Vector2> points, ref BodySweep.Path path, out int lbX, out int lbY)
     {
-        if (!Locate(ref q.Lands, q.Position, q.CellId, out lbX, out lbY, out Vector2 local, out LandblockEntry? entry, out int cellIndex))
+        bool found = Locator.TryFind(frame, ref q.Lands, q.Position, q.CellId, out Place place);
+        (lbX, lbY) = (place.X, place.Y);
+        if (!found)
         {
             return false;
         }
+
+        (Vector2 local, LandblockEntry entry, int cellIndex) = (place.Local, place.Entry, place.CellIndex);
 
         float skin = Skin(lbX, lbY, local, q.Delta.Length() + body.Radius);
         float reach = q.Delta.Length() + body.Radius + skin + PhysicsConstants.ContactTolerance; // every sweep of the slide stays this near the start
@@ -71,11 +75,12 @@ internal sealed class BodyPlanner(WorldFrame frame)
     public float Overlap(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, out Vector2 outward)
     {
         outward = default;
-        if (!Locate(ref q.Lands, position, cellId, out int lbX, out int lbY, out Vector2 local, out LandblockEntry? entry, out int cellIndex))
+        if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place))
         {
             return 0f;
         }
 
+        (int lbX, int lbY, Vector2 local, LandblockEntry entry, int cellIndex) = (place.X, place.Y, place.Local, place.Entry, place.CellIndex);
         float skin = Skin(lbX, lbY, local, body.Radius);
         float radius = body.Radius + skin;
         var hit = WallHit.None;
@@ -107,11 +112,12 @@ internal sealed class BodyPlanner(WorldFrame frame)
     {
         normal = default;
         MoverBody body = q.Options.Body!.Value;
-        if (!Locate(ref q.Lands, position, cellId, out int lbX, out int lbY, out Vector2 local, out LandblockEntry? entry, out int cellIndex))
+        if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place))
         {
             return false;
         }
 
+        (int lbX, int lbY, Vector2 local, LandblockEntry entry, int cellIndex) = (place.X, place.Y, place.Local, place.Entry, place.CellIndex);
         var move = new Vector2(position.X - from.X, position.Y - from.Y);
         Vector2 start = local - move;
         float length = move.Length();
@@ -130,15 +136,6 @@ internal sealed class BodyPlanner(WorldFrame frame)
 
         q.Meet(hit.Source.Kind, hit.Source.Id);
         return true;
-    }
-
-    /// <summary>The mover's place (<see cref="Locator"/>); false when its landblock is not loaded.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private bool Locate(ref Neighbourhood lands, Vector3 position, uint cellId, out int lbX, out int lbY, out Vector2 local, [NotNullWhen(true)] out LandblockEntry? entry, out int cellIndex)
-    {
-        bool found = Locator.TryFind(frame, ref lands, position, cellId, out Place place);
-        (lbX, lbY, local, entry, cellIndex) = (place.X, place.Y, place.Local, place.Entry, place.CellIndex);
-        return found;
     }
 
     /// <summary>

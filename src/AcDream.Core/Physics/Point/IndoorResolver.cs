@@ -112,9 +112,9 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
     /// <summary>The mover stays where it is, on its own cell's floor if it is at (or below) it.</summary>
     private ResolveResult Refuse(ref MoveQuery q, CellSurface cell, ResolveOutcome why, Vector3 normal = default) =>
         Answers.Refuse(
-            in frame, q.Entry.X, q.Entry.Y, q.P0, q.Z,
+            in frame, ref q, new Standing(q.Entry.X, q.Entry.Y, q.P0, 0f, q.CellId),
             cell.TrySampleGround(q.P0.X, q.P0.Y, q.Z, q.StepUp, out float floorHere) ? floorHere : null,
-            q.CellId, in q.Options, why, normal);
+            why, normal);
 
     /// <summary>
     /// A rise is too high when it is more than the step height above the mover's Z, and above the

@@ -183,18 +183,18 @@ internal static class Answers
             : new ResolveResult(ground, cellId, true);
 
     /// <summary>
-    /// A refused move: the mover stays at <paramref name="local"/> (landblock-local, in landblock
-    /// (lbX, lbY)). Against <paramref name="ground"/> (the terrain, or its cell's floor nearest its
+    /// A refused move <paramref name="q"/>: the mover stays where <paramref name="stay"/> says (landblock-local, its
+    /// landblock and cell; its ground Z is not read), at the feet's Z. Against <paramref name="ground"/> (the terrain, or its cell's floor nearest its
     /// feet, under it; null when there is none): feet within <see cref="PhysicsConstants.GroundTolerance"/>
     /// of it keep their Z and stand on it (the spec's "keep currentPos"); feet deeper below it (sunk), or
     /// above it by no more than the step-down height, are put on it; feet higher keep their Z and are
     /// airborne, so the caller's gravity acts.
     /// </summary>
-    public static ResolveResult Refuse(
-        in WorldFrame frame, int lbX, int lbY, Vector2 local, float z, float? ground, uint cellId, in MovementOptions options,
-        ResolveOutcome why, Vector3 normal = default)
+    public static ResolveResult Refuse(in WorldFrame frame, ref MoveQuery q, in Standing stay, float? ground, ResolveOutcome why, Vector3 normal = default)
     {
-        var at = frame.ToWorld(lbX, lbY, local, z);
+        (float z, uint cellId) = (q.Z, stay.CellId);
+        ref readonly MovementOptions options = ref q.Options;
+        var at = frame.ToWorld(stay.X, stay.Y, stay.Local, z);
         bool onGround = false;
         if (ground is float g)
         {

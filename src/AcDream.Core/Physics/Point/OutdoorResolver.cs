@@ -178,7 +178,7 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
 
     /// <summary>A refused move: the mover stays where it stands (<see cref="MoveQuery.Stand"/>), against the terrain's Z under it.</summary>
     private ResolveResult Refuse(ref MoveQuery q, ResolveOutcome why, Vector3 surface = default) =>
-        Answers.Refuse(in frame, q.Stand.X, q.Stand.Y, q.Stand.Local, q.Z, GroundHere(ref q), q.Stand.CellId, in q.Options, why, surface);
+        Answers.Refuse(in frame, ref q, in q.Stand, GroundHere(ref q), why, surface);
 
     /// <summary>
     /// The ground under the mover where it stands: the terrain there (<see cref="Standing.GroundZ"/>), or
