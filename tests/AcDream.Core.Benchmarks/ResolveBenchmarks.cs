@@ -81,6 +81,19 @@ public abstract class ResolveBenchmarks
     [Benchmark(OperationsPerInvoke = Moves)]
     public float BodyOnly() => Run(Deltas, in BodyOnlyOptions);
 
+    /// <summary><see cref="MovementOptions.Player"/> with what each move met (the <see cref="MoveReport"/> overload).</summary>
+    [Benchmark(OperationsPerInvoke = Moves)]
+    public float AllEffectsReported()
+    {
+        float sum = 0f;
+        for (int i = 0; i < Moves; i++)
+        {
+            sum += Sum(Engine.Resolve(Positions[i], CellIds[i], Deltas[i], World.PlayerStepUp, in Player, out MoveReport report)) + report.Floor.Id + report.Wall.Id;
+        }
+
+        return sum;
+    }
+
     [Benchmark(OperationsPerInvoke = Moves)]
     public float Literal_2m() => Run(LongDeltas, in None);
 
