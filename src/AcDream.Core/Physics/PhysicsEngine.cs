@@ -33,7 +33,7 @@ namespace AcDream.Core.Physics;
 /// indoor resolution, <c>IndoorResolver</c>; the portal search, <c>PortalTraversal</c>) and the body's
 /// (<c>BodyResolver</c>, <c>BodyPlanner</c>) are internal types, each one concern;
 /// <c>docs/physics.md</c> maps them. The host queries (frames, the ground) are in
-/// <c>PhysicsEngine.Queries.cs</c>.
+/// <c>PhysicsEngine.Queries.cs</c>; the call that also reports what a move met in <c>PhysicsEngine.Report.cs</c>.
 /// </para>
 /// </remarks>
 public sealed partial class PhysicsEngine
@@ -201,36 +201,6 @@ public sealed partial class PhysicsEngine
         return Move(ref query);
     }
 
-    /// <summary>
-    /// <see cref="Resolve(Vector3, uint, Vector3, float, in MovementOptions)"/>, and what the move met: the floor the
-    /// answer stands on and the wall, shell or cylinder that stopped or slid it (see <see cref="MoveReport"/>). The
-    /// answer is bit for bit that of the call without the report; the report costs only the calls that ask for it.
-    /// </summary>
-    /// <param name="currentPos">Where the mover's feet are, world metres.</param>
-    /// <param name="currentCellId">The cell the mover is in (<c>0xXXYYCCCC</c>).</param>
-    /// <param name="delta">The intended move, world metres; its Z is ignored.</param>
-    /// <param name="stepUpHeight">Highest rise one move (one sub-step when sweeping) may climb, metres, ≥ 0.</param>
-    /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
-    /// <param name="report">What the move met.</param>
-    /// <exception cref="ArgumentException">As the four-argument call.</exception>
-    public ResolveResult Resolve(
-        Vector3 currentPos,
-        uint currentCellId,
-        Vector3 delta,
-        float stepUpHeight,
-        in MovementOptions options,
-        out MoveReport report)
-    {
-        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry);
-        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
-        SurfaceContact wall = default;
-        query.Met = ref wall;
-        ResolveResult result = Move(ref query);
-        report = Report(ref lands, in result, wall);
-        return result;
-    }
-
     /// <summary>The move of a checked call: a body's among the walls near it, else the point's (<see cref="PointMover"/>).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private ResolveResult Move(ref MoveQuery query)
@@ -247,28 +217,6 @@ public sealed partial class PhysicsEngine
             ? _body.AlongContour(ref query, result)
             : result;
     }
-
-    /// <summary>
-    /// What the move that answered <paramref name="result"/> met: the ground the answer stands on (the one ground
-    /// probe, at the answer's feet: what standing there gives again), and <paramref name="wall"/> as the move recorded
-    /// it when its outcome is a wall's (with the answer's normal).
-    /// </summary>
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private MoveReport Report(ref Neighbourhood lands, in ResolveResult result, SurfaceContact wall)
-    {
-        bool walled = result.Outcome is ResolveOutcome.Wall or ResolveOutcome.OuterWall
-            || (result.Outcome == ResolveOutcome.Slid && result.SurfaceNormal.Z == 0f);
-        SurfaceContact met = walled && wall.Kind != SurfaceKind.None ? wall with { Normal = result.SurfaceNormal } : default;
-        SurfaceContact floor = default;
-        if (result.IsOnGround && result.Outcome != ResolveOutcome.Held
-            && Locator.TryFind(_frame, ref lands, result.Position, result.CellId, out Place place))
-        {
-            Ground.TryUnder(ref lands, in place, result.Position.Z, PhysicsConstants.GroundTolerance, out _, out floor);
-        }
-
-        return new MoveReport(floor, met);
-    }
-
 
     /// <summary>Tests' seam: whether a body's move needs no plan (<see cref="BodyPlanner.IsOpenGround"/>), as <c>Resolve</c> asks it.</summary>
     internal bool IsOpenGround(Vector3 position, uint cellId, Vector2 move, MoverBody body)

@@ -9,7 +9,7 @@ namespace AcDream.Core.Tests.Robustness;
 /// The one-bit skip against the fine grid itself, at the coordinates where it could go wrong: starts on
 /// a cell's edge (24 k m), one float step either side of it, at 0 and 192 m, and moves just short of
 /// <see cref="LandblockEntry.ObjectCellReach"/> along each axis and diagonally. Wherever a start's cell
-/// bit is clear, the fine grid (<see cref="ObjectGeometry.AnyOutdoors"/>) must list no object over the
+/// bit is clear, the fine grid (<c>LandblockEntry.Objects</c>) must list no object over the
 /// move's box; trees are seeded at random, many landblocks over.
 /// </summary>
 public class ObjectCellBitTests(ITestOutputHelper output)

@@ -73,3 +73,19 @@ internal readonly record struct WallSource(SurfaceKind Kind, uint Id)
     /// <summary>An object's walls: its shell's, or an object's.</summary>
     public static WallSource Of(ObjectSurface o) => new(o.IsBuilding ? SurfaceKind.BuildingShell : SurfaceKind.ObjectWall, o.ObjectId);
 }
+
+/// <summary>What a body's path holds besides its corner points: how many corners, and what it touched.</summary>
+internal struct BodyPath
+{
+    /// <summary>How many corner points are used (1 + legs); the first is the start.</summary>
+    public int Count;
+
+    /// <summary>Walls touched.</summary>
+    public int Contacts;
+
+    /// <summary>The last wall touched: its unit normal seen from above, pointing at the body.</summary>
+    public Vector2 Normal;
+
+    /// <summary>Whose the last wall touched is.</summary>
+    public WallSource Wall;
+}

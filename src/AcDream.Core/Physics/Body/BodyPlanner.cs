@@ -18,7 +18,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
     /// loaded (no walls are known: the point move decides).
     /// </summary>
     [SkipLocalsInit] // the stack buffers are written before they are read
-    public bool Plan(ref MoveQuery q, MoverBody body, scoped Span<Vector2> points, ref BodySweep.Path path, out int lbX, out int lbY)
+    public bool Plan(ref MoveQuery q, MoverBody body, scoped Span<Vector2> points, ref BodyPath path, out int lbX, out int lbY)
     {
         bool found = Locator.TryFind(frame, ref q.Lands, q.Position, q.CellId, out Place place);
         (lbX, lbY) = (place.X, place.Y);

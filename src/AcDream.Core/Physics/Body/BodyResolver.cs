@@ -23,7 +23,7 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
     public ResolveResult Resolve(ref MoveQuery q, bool contourLeft)
     {
         Span<Vector2> points = stackalloc Vector2[PhysicsConstants.MaxBodyContacts + 2];
-        var path = default(BodySweep.Path);
+        var path = default(BodyPath);
         int lbX = 0, lbY = 0;
         bool planned = q.Delta != Vector2.Zero && planner.Plan(ref q, q.Options.Body!.Value, points, ref path, out lbX, out lbY);
         var start = new ResolveResult(q.Position, q.CellId, false);

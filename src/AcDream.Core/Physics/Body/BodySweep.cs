@@ -30,22 +30,6 @@ internal static class BodySweep
     /// </summary>
     private const float ConcaveTolerance = 1e-3f;
 
-    /// <summary>What a body's path holds besides its corner points: how many corners, and what it touched.</summary>
-    public struct Path
-    {
-        /// <summary>How many corner points are used (1 + legs); the first is the start.</summary>
-        public int Count;
-
-        /// <summary>Walls touched.</summary>
-        public int Contacts;
-
-        /// <summary>The last wall touched: its unit normal seen from above, pointing at the body.</summary>
-        public Vector2 Normal;
-
-        /// <summary>Whose the last wall touched is.</summary>
-        public WallSource Wall;
-    }
-
     /// <summary>
     /// Slides a body (<paramref name="move"/>: its contact radius, start, move and band) among the walls of
     /// <paramref name="walls"/>, writing the path's corners to <paramref name="points"/> (landblock-local;
@@ -63,7 +47,7 @@ internal static class BodySweep
     /// bit. Deeper overlaps are not this rounding (a body placed in a wall by its caller) and are left
     /// alone; so is a push back into another wall (a narrow wedge).
     /// </remarks>
-    public static void Slide(in WallSet walls, in BodyMove move, Span<Vector2> points, ref Path path)
+    public static void Slide(in WallSet walls, in BodyMove move, Span<Vector2> points, ref BodyPath path)
     {
         Vector2 p = move.P, d = move.D;
         float sink = move.Sink;
