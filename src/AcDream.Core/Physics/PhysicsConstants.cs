@@ -195,4 +195,7 @@ public static class PhysicsConstants
     /// rounding the move into a landblock's frame never leaves a square out: 1 cm.
     /// </summary>
     internal const float NearMargin = 0.01f;
+
+    /// <summary>The side of a square of a cell's open floor (<see cref="OpenFloor"/>), metres.</summary>
+    internal const float OpenFloorSquare = 0.5f;
 }

@@ -28,11 +28,29 @@ internal sealed class BodyPlanner(WorldFrame frame)
         }
 
         (Vector2 local, LandblockEntry entry, int cellIndex) = (place.Local, place.Entry, place.CellIndex);
+        if (cellIndex >= 0)
+        {
+            (q.Entry, q.P0, q.CellIndex) = (entry, local, cellIndex); // located once: the point move of the free path starts here
+        }
+
 
         float skin = Skin(lbX, lbY, local, q.Delta.Length() + body.Radius);
         float reach = q.Delta.Length() + body.Radius + skin + PhysicsConstants.ContactTolerance; // every sweep of the slide stays this near the start
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         var move = BodyMove.Of(local, q.Delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height);
+        if (cellIndex >= 0 && entry.OpenFloors[cellIndex] is OpenFloor open)
+        {
+            // On open floor: no wall reaches into the sweep's box and band, and no portal into the wall set's box, so the
+            // slide below would touch nothing; its path is the move itself, as the slide writes it.
+            float grow = move.Radius + PhysicsConstants.ContactTolerance;
+            Vector2 end = local + q.Delta;
+            if (open.IsOpen(Vector2.Min(local, end) - new Vector2(grow), Vector2.Max(local, end) + new Vector2(grow), move.ZLow, move.ZHigh, local - new Vector2(reach), local + new Vector2(reach)))
+            {
+                (points[0], points[1], path.Count) = (local, end, 2);
+                return true;
+            }
+        }
+
         var walls = new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh));
         BodySweep.Slide(in walls, in move, points, ref path);
         return true;

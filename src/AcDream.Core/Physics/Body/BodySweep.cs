@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
@@ -336,13 +337,17 @@ internal static class BodySweep
         }
 
         ReadOnlySpan<Vector3> vertices = walls.Vertices;
-        foreach (ref readonly WallPolygon wall in walls.Polygons.AsSpan())
+        ReadOnlySpan<WallPolygon> polygons = walls.Polygons;
+        ReadOnlySpan<WallExtent> extents = walls.Extents.AsSpan(0, polygons.Length);
+        Vector128<float> box = WallExtent.Query(lo, hi);
+        for (int i = 0; i < extents.Length; i++)
         {
-            if (wall.ZMax <= zLow || wall.ZMin >= zHigh
-                || wall.Min.X > hi.X || wall.Max.X < lo.X || wall.Min.Y > hi.Y || wall.Max.Y < lo.Y)
+            if (!extents[i].Meets(box, zLow, zHigh))
             {
                 continue;
             }
+
+            ref readonly WallPolygon wall = ref polygons[i];
 
             if (wall.IsUpright)
             {

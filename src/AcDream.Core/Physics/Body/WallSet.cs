@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
@@ -58,15 +59,15 @@ internal ref struct WallSet
             return false;
         }
 
+        Vector128<float> query = WallExtent.Query(box.Lo, box.Hi);
         for (int i = 0; i < list.Count; i++)
         {
             int cell = list[i] & (ObjectBit - 1);
-            ReadOnlySpan<PortalShape> shapes = entry.Cells[cell].PortalShapes;
             int[] targets = entry.PortalTargets[cell];
-            for (int k = 0; k < shapes.Length; k++)
+            ReadOnlySpan<Vector128<float>> extents = entry.PortalExtents[cell].AsSpan(0, targets.Length);
+            for (int k = 0; k < extents.Length; k++)
             {
-                PortalShape portal = shapes[k];
-                if (targets[k] >= 0 && portal.BoundsMin.X <= box.Hi.X && portal.BoundsMax.X >= box.Lo.X && portal.BoundsMin.Y <= box.Hi.Y && portal.BoundsMax.Y >= box.Lo.Y
+                if (targets[k] >= 0 && Vector128.LessThanOrEqualAll(extents[k], query)
                     && !list.Contains((Own << SlotShift) | targets[k]) && !list.Add((Own << SlotShift) | targets[k]))
                 {
                     return false;

@@ -13,7 +13,12 @@ internal sealed class IndoorResolver(WorldFrame frame, PortalTraversal portals)
 {
     public ResolveResult Resolve(ref MoveQuery q)
     {
-        if (!Locator.TryFind(frame, ref q.Lands, q.Position, q.CellId, out Place place))
+        Place place;
+        if (q.CellIndex >= 0)
+        {
+            place = new Place(q.Entry, q.Entry.X, q.Entry.Y, q.P0, q.CellIndex); // located by the body's planner
+        }
+        else if (!Locator.TryFind(frame, ref q.Lands, q.Position, q.CellId, out place))
         {
             return new ResolveResult(q.Position, q.CellId, true) { Outcome = ResolveOutcome.Held }; // the cell's landblock is not loaded
         }

@@ -45,6 +45,12 @@ internal ref struct MoveQuery
     /// <summary>The end of the move, landblock-local, likewise representable.</summary>
     public Vector2 P1;
 
+    /// <summary>
+    /// Indoors, once the mover is located (<see cref="Entry"/>, <see cref="P0"/>): its cell's index, so the move is not
+    /// located again (the body's planner locates it first); −1 until then.
+    /// </summary>
+    public int CellIndex;
+
     /// <summary>Cell visits the portal search may still make (<see cref="PhysicsConstants.MaxCellVisits"/> per call).</summary>
     public int CellVisitsLeft;
 
@@ -74,6 +80,7 @@ internal ref struct MoveQuery
         Stand = default;
         P0 = default;
         P1 = default;
+        CellIndex = -1;
         CellVisitsLeft = PhysicsConstants.MaxCellVisits;
     }
 

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.Intrinsics;
 
 namespace AcDream.Core.Physics;
 
@@ -52,6 +53,12 @@ internal sealed class CellWalls
     {
         Polygons = polygons;
         Vertices = vertices;
+        Extents = new WallExtent[polygons.Length];
+        for (int i = 0; i < polygons.Length; i++)
+        {
+            Extents[i] = new WallExtent(polygons[i]);
+        }
+
         if (polygons.Length == 0)
         {
             Min = new Vector2(float.MaxValue);
@@ -76,6 +83,9 @@ internal sealed class CellWalls
     public WallPolygon[] Polygons { get; }
 
     public Vector3[] Vertices { get; }
+
+    /// <summary>Each polygon's bounds, packed for the sweep's first test (<see cref="WallExtent.Meets"/>), in <see cref="Polygons"/>' order.</summary>
+    public WallExtent[] Extents { get; }
 
     /// <summary>Bounds of all the walls seen from above (empty when there are none).</summary>
     public Vector2 Min { get; }
@@ -203,4 +213,28 @@ internal sealed class CellWalls
 
         return false;
     }
+}
+
+/// <summary>
+/// A wall polygon's bounds packed so that one comparison of four lanes tests them against a box seen from above:
+/// (min X, min Y, −max X, −max Y) against (box max X, box max Y, −box min X, −box min Y), then the heights. The
+/// comparisons are exact (negation is exact), so the test is the same on every instruction set.
+/// </summary>
+internal readonly struct WallExtent(WallPolygon wall)
+{
+    private readonly Vector128<float> _xy = Pack(wall.Min, wall.Max);
+    private readonly float _zMin = wall.ZMin;
+    private readonly float _zMax = wall.ZMax;
+
+    /// <summary>Bounds <paramref name="min"/>–<paramref name="max"/> seen from above, packed: <c>Vector128.LessThanOrEqualAll(packed, Query(lo, hi))</c> when they meet the box lo–hi.</summary>
+    public static Vector128<float> Pack(Vector2 min, Vector2 max) => Vector128.Create(min.X, min.Y, -max.X, -max.Y);
+
+    /// <summary>The box (min X, min Y, max X, max Y) as <see cref="Meets"/> takes it.</summary>
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    public static Vector128<float> Query(Vector2 lo, Vector2 hi) => Vector128.Create(hi.X, hi.Y, -lo.X, -lo.Y);
+
+    /// <summary>Whether the polygon's bounds meet the box (<see cref="Query"/>) seen from above and reach into the band <paramref name="zLow"/>–<paramref name="zHigh"/> (open at both ends).</summary>
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    public bool Meets(Vector128<float> box, float zLow, float zHigh) =>
+        Vector128.LessThanOrEqualAll(_xy, box) && _zMax > zLow && _zMin < zHigh;
 }

@@ -1,0 +1,132 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Where a cell's floor is open, built once per landblock entry: squares of <see cref="PhysicsConstants.OpenFloorSquare"/>
+/// over the floor's bounds, each with the height span (lowest bottom to highest top) of the walls whose bounds meet it
+/// (the cell's own and its objects'), and whether a portal's bounds meet it. A body move whose sweep box's squares hold
+/// no wall reaching into its height band, and whose wall-set box's squares hold no portal, meets no wall: its planner
+/// lists only its own cell (no portal leads it on) and sweeps nothing there. A box reaching past the floor's bounds is
+/// never open. Landblock-local metres; queries allocate nothing.
+/// </summary>
+internal sealed class OpenFloor
+{
+    private readonly Vector2 _min;
+    private readonly int _columns;
+    private readonly int _rows;
+    private readonly float[] _bottom;
+    private readonly float[] _top;
+    private readonly bool[] _portal;
+
+    private OpenFloor(Vector2 min, int columns, int rows)
+    {
+        (_min, _columns, _rows) = (min, columns, rows);
+        _bottom = new float[columns * rows];
+        _top = new float[columns * rows];
+        _portal = new bool[columns * rows];
+        Array.Fill(_bottom, float.PositiveInfinity);
+        Array.Fill(_top, float.NegativeInfinity);
+    }
+
+    /// <summary>The open floor of <paramref name="cell"/> (with the objects standing in it); null when it has no floor.</summary>
+    public static OpenFloor? Build(CellSurface cell)
+    {
+        if (!(cell.FloorMin.X <= cell.FloorMax.X && cell.FloorMin.Y <= cell.FloorMax.Y))
+        {
+            return null;
+        }
+
+        Vector2 extent = cell.FloorMax - cell.FloorMin;
+        int columns = Math.Clamp((int)MathF.Ceiling(extent.X / PhysicsConstants.OpenFloorSquare), 1, PhysicsConstants.FloorGridMaxSide);
+        int rows = Math.Clamp((int)MathF.Ceiling(extent.Y / PhysicsConstants.OpenFloorSquare), 1, PhysicsConstants.FloorGridMaxSide);
+        var open = new OpenFloor(cell.FloorMin, columns, rows);
+        open.AddWalls(cell.Walls);
+        foreach (ObjectSurface o in cell.Objects)
+        {
+            open.AddWalls(o.Walls);
+        }
+
+        foreach (PortalShape portal in cell.PortalShapes)
+        {
+            open.Mark(portal.BoundsMin, portal.BoundsMax, float.NegativeInfinity, float.PositiveInfinity, portal: true);
+        }
+
+        return open;
+    }
+
+    /// <summary>
+    /// Whether no wall's bounds meet <paramref name="lo"/>–<paramref name="hi"/> (seen from above) reaching into the band
+    /// <paramref name="zLow"/>–<paramref name="zHigh"/> (open at both ends), and no portal's bounds meet
+    /// <paramref name="portalLo"/>–<paramref name="portalHi"/>. False when either box reaches past the floor's squares.
+    /// </summary>
+    public bool IsOpen(Vector2 lo, Vector2 hi, float zLow, float zHigh, Vector2 portalLo, Vector2 portalHi)
+    {
+        if (!Within(lo, hi) || !Within(portalLo, portalHi))
+        {
+            return false;
+        }
+
+        (int c0, int c1, int r0, int r1) = Squares(portalLo, portalHi);
+        for (int c = c0; c <= c1; c++)
+        {
+            for (int r = r0; r <= r1; r++)
+            {
+                if (_portal[(c * _rows) + r])
+                {
+                    return false;
+                }
+            }
+        }
+
+        (c0, c1, r0, r1) = Squares(lo, hi);
+        for (int c = c0; c <= c1; c++)
+        {
+            for (int r = r0; r <= r1; r++)
+            {
+                int i = (c * _rows) + r;
+                if (_top[i] > zLow && _bottom[i] < zHigh)
+                {
+                    return false;
+                }
+            }
+        }
+
+        return true;
+    }
+
+    private void AddWalls(CellWalls walls)
+    {
+        foreach (WallPolygon w in walls.Polygons)
+        {
+            Mark(w.Min, w.Max, w.ZMin, w.ZMax, portal: false);
+        }
+    }
+
+    /// <summary>Notes a wall (or portal) with bounds <paramref name="min"/>–<paramref name="max"/> in every square they meet; bounds beyond the floor's squares are noted in the border squares.</summary>
+    private void Mark(Vector2 min, Vector2 max, float zMin, float zMax, bool portal)
+    {
+        (int c0, int c1, int r0, int r1) = Squares(min, max);
+        for (int c = c0; c <= c1; c++)
+        {
+            for (int r = r0; r <= r1; r++)
+            {
+                int i = (c * _rows) + r;
+                (_bottom[i], _top[i]) = (MathF.Min(_bottom[i], zMin), MathF.Max(_top[i], zMax));
+                _portal[i] |= portal;
+            }
+        }
+    }
+
+    /// <summary>Whether a box lies within the floor's squares (the border squares hold what lies beyond them).</summary>
+    private bool Within(Vector2 lo, Vector2 hi) =>
+        lo.X >= _min.X && lo.Y >= _min.Y
+        && hi.X <= _min.X + (_columns * PhysicsConstants.OpenFloorSquare) && hi.Y <= _min.Y + (_rows * PhysicsConstants.OpenFloorSquare);
+
+    /// <summary>The squares a box meets, clamped to the grid.</summary>
+    private (int C0, int C1, int R0, int R1) Squares(Vector2 lo, Vector2 hi) =>
+        (Index(lo.X - _min.X, _columns), Index(hi.X - _min.X, _columns), Index(lo.Y - _min.Y, _rows), Index(hi.Y - _min.Y, _rows));
+
+    private static int Index(float offset, int count) =>
+        Math.Clamp((int)MathF.Floor(offset / PhysicsConstants.OpenFloorSquare), 0, count - 1);
+}
