@@ -206,7 +206,7 @@ public sealed partial class PhysicsEngine
     private ResolveResult Move(ref MoveQuery query)
     {
         ref readonly MovementOptions options = ref query.Options;
-        if (options.Body is MoverBody body && (query.Delta == Vector2.Zero || !_planner.IsOpenGround(ref query.Lands, query.Position, query.CellId, query.Delta, body)))
+        if (options.Body is MoverBody body && (query.Delta == Vector2.Zero || !_planner.IsOpenGround(ref query, query.Delta, body)))
         {
             return _body.Resolve(ref query, contourLeft: true);
         }
@@ -222,7 +222,9 @@ public sealed partial class PhysicsEngine
     internal bool IsOpenGround(Vector3 position, uint cellId, Vector2 move, MoverBody body)
     {
         var lands = new Neighbourhood(_registry);
-        return _planner.IsOpenGround(ref lands, position, cellId, move, body);
+        MovementOptions options = new() { Body = body };
+        var query = new MoveQuery(ref lands, position, cellId, move, 0f, in options);
+        return _planner.IsOpenGround(ref query, move, body);
     }
 
     /// <summary>Tests' seam: a body's move always planned (<see cref="BodyResolver.Resolve"/>), never the open-ground shortcut.</summary>

@@ -70,3 +70,24 @@ public sealed class OpenFloorTests(ITestOutputHelper output)
 
     private static float FloorZ(CellSurface cell, Vector2 p) => cell.SampleFloorZ(p.X, p.Y) ?? cell.GetFloorTriangles()[0].A.Z;
 }
+
+/// <summary>The float spacing the body's skin is built from is <c>MathF.BitIncrement(x) − x</c>, bit for bit, at every scale.</summary>
+public sealed class SpacingTests
+{
+    [Fact]
+    public void Spacing_is_the_bit_increment_at_every_scale()
+    {
+        var random = new Random(7);
+        var cases = new List<float> { 0f, float.Epsilon, 1e-40f, 1e-38f, 1.1754944e-38f, 1e-30f, 0.48f, 1f, 2f, 192f, 65535f, 3.9e6f, 1e20f, float.MaxValue, float.MaxValue / 2f, float.PositiveInfinity };
+        for (int i = 0; i < 100_000; i++)
+        {
+            cases.Add(BitConverter.Int32BitsToSingle(random.Next(0, 0x7F800001)));
+        }
+
+        foreach (float x in cases)
+        {
+            float want = MathF.BitIncrement(x) - x, got = Geometry.Spacing(x);
+            BitConverter.SingleToInt32Bits(got).Should().Be(BitConverter.SingleToInt32Bits(want), $"x = {x:R} (0x{BitConverter.SingleToInt32Bits(x):X8}): {got:R} against {want:R}");
+        }
+    }
+}

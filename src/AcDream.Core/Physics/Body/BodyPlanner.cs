@@ -57,30 +57,33 @@ internal sealed class BodyPlanner(WorldFrame frame)
     }
 
     /// <summary>
-    /// Whether an outdoor move of <paramref name="delta"/> (not zero) needs no plan: its landblock is not
-    /// loaded (the point move holds or refuses it), or no wall lies in the box the body sweeps (the move's
-    /// start and end grown by the radius, skin and contact tolerance), in its landblock or across a seam.
-    /// Then the body meets no wall, and the point move is its answer. Indoor moves are always planned.
+    /// Whether an outdoor move of <paramref name="delta"/> (not zero) from the start of <paramref name="q"/> needs no plan:
+    /// its landblock is not loaded (the point move holds or refuses it), or no wall lies in the box the body sweeps (the
+    /// move's start and end grown by the radius, skin and contact tolerance), in its landblock or across a seam. Then the
+    /// body meets no wall, and the point move is its answer; the mover located here is where that point move starts
+    /// (<see cref="MoveQuery.CellIndex"/>). Indoor moves are always planned.
     /// </summary>
-    public bool IsOpenGround(ref Neighbourhood lands, Vector3 position, uint cellId, Vector2 delta, MoverBody body)
+    public bool IsOpenGround(ref MoveQuery q, Vector2 delta, MoverBody body)
     {
-        if (CellIds.IsIndoor(cellId))
+        if (CellIds.IsIndoor(q.CellId))
         {
             return false;
         }
 
-        frame.Locate(position, cellId, out int lbX, out int lbY, out Vector2 local);
-        if (lands.Get(lbX, lbY) is not LandblockEntry entry)
+        frame.Locate(q.Position, q.CellId, out int lbX, out int lbY, out Vector2 local);
+        if (q.Lands.Get(lbX, lbY) is not LandblockEntry entry)
         {
             return true;
         }
+
+        (q.Here, q.P0, q.CellIndex) = (entry, local, MoveQuery.Outdoors); // located once
 
         // The box the body sweeps (its start and end grown by its radius, skin and the contact
         // tolerance): with no wall in it the body meets none on its way, so it does not slide, and its
         // move is the point's.
         float grow = body.Radius + Skin(lbX, lbY, local, delta.Length() + body.Radius) + PhysicsConstants.ContactTolerance;
         Vector2 min = Vector2.Min(local, local + delta) - new Vector2(grow), max = Vector2.Max(local, local + delta) + new Vector2(grow);
-        return !WallSet.AnyOutdoors(ref lands, entry, min, max);
+        return !WallSet.AnyOutdoors(ref q.Lands, entry, min, max);
     }
 
     /// <summary>
@@ -166,6 +169,6 @@ internal sealed class BodyPlanner(WorldFrame frame)
     {
         Vector2 world = frame.Origin(lbX, lbY) + local;
         float largest = MathF.Max(MathF.Max(MathF.Abs(world.X), MathF.Abs(world.Y)), MathF.Max(MathF.Abs(local.X), MathF.Abs(local.Y))) + reach;
-        return PhysicsConstants.BodySkin + (2f * (MathF.BitIncrement(largest) - largest));
+        return PhysicsConstants.BodySkin + (2f * Geometry.Spacing(largest));
     }
 }

@@ -184,7 +184,7 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
         }
 
         MoveQuery along = q.Next(q.Position, q.CellId, contour);
-        ResolveResult result = planner.IsOpenGround(ref q.Lands, q.Position, q.CellId, contour, q.Options.Body!.Value)
+        ResolveResult result = planner.IsOpenGround(ref along, contour, q.Options.Body!.Value)
             ? point.Move(ref along)
             : Resolve(ref along, contourLeft: false);
         return result.IsRefused

@@ -328,48 +328,69 @@ internal static class BodySweep
     /// bounds meet the sweep's box (<paramref name="lo"/>–<paramref name="hi"/>, in their frame) and whose
     /// heights meet the move's band.
     /// </summary>
-    public static void SweepWalls(CellWalls walls, Vector2 offset, Vector2 lo, Vector2 hi, in BodyMove move, ref WallHit hit)
+    public static void SweepWalls(CellWalls walls, Vector2 offset, Vector2 lo, Vector2 hi, in BodyMove move, ref WallHit hit) =>
+        SweepWalls(walls, ulong.MaxValue, offset, new WallBox(lo, hi, move.ZLow, move.ZHigh), in move, ref hit);
+
+    /// <summary>
+    /// As <see cref="SweepWalls(CellWalls, Vector2, Vector2, Vector2, in BodyMove, ref WallHit)"/>, among the walls whose
+    /// bits are set in <paramref name="candidates"/> (bit i: polygon i; all of them past the 64th); <paramref name="box"/>
+    /// is the sweep's box and band in the walls' frame.
+    /// </summary>
+    public static void SweepWalls(CellWalls walls, ulong candidates, Vector2 offset, in WallBox box, in BodyMove move, ref WallHit hit)
     {
-        float zLow = move.ZLow, zHigh = move.ZHigh; // locals: the hit written below might alias the move for all the JIT knows
+        float zLow = box.ZLow, zHigh = box.ZHigh;
+        Vector2 lo = box.Lo, hi = box.Hi;
         if (walls.Min.X > hi.X || walls.Max.X < lo.X || walls.Min.Y > hi.Y || walls.Max.Y < lo.Y || walls.ZMax <= zLow || walls.ZMin >= zHigh)
         {
             return;
         }
 
-        ReadOnlySpan<Vector3> vertices = walls.Vertices;
-        ReadOnlySpan<WallPolygon> polygons = walls.Polygons;
-        ReadOnlySpan<WallExtent> extents = walls.Extents.AsSpan(0, polygons.Length);
-        Vector128<float> box = WallExtent.Query(lo, hi);
-        for (int i = 0; i < extents.Length; i++)
+        ReadOnlySpan<WallExtent> extents = walls.Extents;
+        Vector128<float> query = WallExtent.Query(lo, hi);
+        if (extents.Length > 64)
         {
-            if (!extents[i].Meets(box, zLow, zHigh))
+            for (int i = 0; i < extents.Length; i++)
             {
-                continue;
-            }
-
-            ref readonly WallPolygon wall = ref polygons[i];
-
-            if (wall.IsUpright)
-            {
-                // A cylinder (Radius > 0) is met at the sum of the radii, and so is its graze: the graze is
-                // measured from the contact radius, else every move coming no nearer the axis than the body's
-                // own graze was taken for a graze and the body walked into the trunk up to its own radius.
-                if (wall.Radius > 0f)
+                if (extents[i].Meets(query, zLow, zHigh))
                 {
-                    WallSource owner = hit.Current;
-                    hit.Current = owner with { Kind = SurfaceKind.Cylinder };
-                    SweepSegment(in move, wall.A + offset, wall.B + offset, wall.Radius, ref hit);
-                    hit.Current = owner;
-                }
-                else
-                {
-                    SweepSegment(in move, wall.A + offset, wall.B + offset, 0f, ref hit);
+                    SweepWall(walls, i, offset, in move, ref hit);
                 }
             }
-            else
+
+            return;
+        }
+
+        for (ulong left = candidates & (extents.Length == 64 ? ulong.MaxValue : (1UL << extents.Length) - 1); left != 0; left &= left - 1)
+        {
+            int i = System.Numerics.BitOperations.TrailingZeroCount(left);
+            if (extents[i].Meets(query, zLow, zHigh))
             {
-                SweepPolygon(vertices.Slice(wall.First, wall.Count), offset, in move, ref hit);
+                SweepWall(walls, i, offset, in move, ref hit);
             }
+        }
+    }
+
+    /// <summary>Sweeps polygon <paramref name="i"/> of <paramref name="walls"/>: an upright one as its segment (a cylinder's widened by its radius), another cut to the band.</summary>
+    private static void SweepWall(CellWalls walls, int i, Vector2 offset, in BodyMove move, ref WallHit hit)
+    {
+        ref readonly WallPolygon wall = ref walls.Polygons[i];
+        if (!wall.IsUpright)
+        {
+            SweepPolygon(walls.Vertices.AsSpan(wall.First, wall.Count), offset, in move, ref hit);
+        }
+        else if (wall.Radius > 0f)
+        {
+            // A cylinder is met at the sum of the radii, and so is its graze: the graze is measured from the contact
+            // radius, else every move coming no nearer the axis than the body's own graze was taken for a graze and
+            // the body walked into the trunk up to its own radius.
+            WallSource owner = hit.Current;
+            hit.Current = owner with { Kind = SurfaceKind.Cylinder };
+            SweepSegment(in move, wall.A + offset, wall.B + offset, wall.Radius, ref hit);
+            hit.Current = owner;
+        }
+        else
+        {
+            SweepSegment(in move, wall.A + offset, wall.B + offset, 0f, ref hit);
         }
     }
 

@@ -249,7 +249,8 @@ internal ref struct WallSet
 
             CellSurface cell = of.Cells[index];
             _hit.Current = new WallSource(SurfaceKind.CellWall, cell.CellId);
-            BodySweep.SweepWalls(cell.Walls, offset, boxLo, boxHi, in _move, ref _hit);
+            ulong near = of.OpenFloors[index] is OpenFloor open ? open.WallsNear(boxLo, boxHi) : ulong.MaxValue;
+            BodySweep.SweepWalls(cell.Walls, near, offset, new WallBox(boxLo, boxHi, _move.ZLow, _move.ZHigh), in _move, ref _hit);
             foreach (ObjectSurface o in cell.Objects)
             {
                 _hit.Current = WallSource.Of(o);

@@ -46,10 +46,14 @@ internal ref struct MoveQuery
     public Vector2 P1;
 
     /// <summary>
-    /// Indoors, once the mover is located (<see cref="Entry"/>, <see cref="P0"/>): its cell's index, so the move is not
-    /// located again (the body's planner locates it first); −1 until then.
+    /// Once the body's planner has located the mover, so its point move does not locate it again: indoors its cell's
+    /// index (with <see cref="Entry"/> and <see cref="P0"/>), outdoors <see cref="Outdoors"/> (with <see cref="Here"/> and
+    /// <see cref="P0"/>); −1 until then.
     /// </summary>
     public int CellIndex;
+
+    /// <summary>The <see cref="CellIndex"/> of an outdoor mover located by the body's planner.</summary>
+    public const int Outdoors = -2;
 
     /// <summary>Cell visits the portal search may still make (<see cref="PhysicsConstants.MaxCellVisits"/> per call).</summary>
     public int CellVisitsLeft;

@@ -23,8 +23,20 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
         // The query's inputs as locals: the hot path then works in registers, not through the reference.
         Vector3 position = q.Position;
         Vector2 delta = q.Delta;
-        frame.Locate(position, q.CellId, out int lbX, out int lbY, out Vector2 local);
-        LandblockEntry? here = q.Lands.Get(lbX, lbY);
+        int lbX, lbY;
+        Vector2 local;
+        LandblockEntry? here;
+        if (q.CellIndex == MoveQuery.Outdoors)
+        {
+            (here, local) = (q.Here!, q.P0); // located by the body's planner
+            (lbX, lbY) = (here.X, here.Y);
+        }
+        else
+        {
+            frame.Locate(position, q.CellId, out lbX, out lbY, out local);
+            here = q.Lands.Get(lbX, lbY);
+        }
+
         uint hereCellId = WorldFrame.OutdoorCellId(lbX, lbY, local);
         if (here is null)
         {

@@ -69,4 +69,18 @@ internal static class Geometry
 
     /// <summary>Whether every coordinate of <paramref name="v"/> is finite.</summary>
     public static bool IsFinite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
+
+    /// <summary>
+    /// <c>MathF.BitIncrement(x) − x</c> for <paramref name="x"/> ≥ 0, bit for bit: the spacing of floats at x, from the
+    /// exponent's bits alone where that spacing is a normal float and x is below <see cref="float.MaxValue"/>
+    /// (every length the engine asks it of), else by the increment itself.
+    /// </summary>
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    public static float Spacing(float x)
+    {
+        int exponent = BitConverter.SingleToInt32Bits(x) & 0x7F800000;
+        return exponent > (23 << 23) && x < float.MaxValue
+            ? BitConverter.Int32BitsToSingle(exponent - (23 << 23))
+            : MathF.BitIncrement(x) - x;
+    }
 }

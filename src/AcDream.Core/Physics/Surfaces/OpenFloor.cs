@@ -18,6 +18,7 @@ internal sealed class OpenFloor
     private readonly float[] _bottom;
     private readonly float[] _top;
     private readonly bool[] _portal;
+    private readonly ulong[] _walls;
 
     private OpenFloor(Vector2 min, int columns, int rows)
     {
@@ -25,6 +26,7 @@ internal sealed class OpenFloor
         _bottom = new float[columns * rows];
         _top = new float[columns * rows];
         _portal = new bool[columns * rows];
+        _walls = new ulong[columns * rows];
         Array.Fill(_bottom, float.PositiveInfinity);
         Array.Fill(_top, float.NegativeInfinity);
     }
@@ -41,15 +43,23 @@ internal sealed class OpenFloor
         int columns = Math.Clamp((int)MathF.Ceiling(extent.X / PhysicsConstants.OpenFloorSquare), 1, PhysicsConstants.FloorGridMaxSide);
         int rows = Math.Clamp((int)MathF.Ceiling(extent.Y / PhysicsConstants.OpenFloorSquare), 1, PhysicsConstants.FloorGridMaxSide);
         var open = new OpenFloor(cell.FloorMin, columns, rows);
-        open.AddWalls(cell.Walls);
+        WallPolygon[] own = cell.Walls.Polygons;
+        for (int i = 0; i < own.Length; i++)
+        {
+            open.Mark(own[i].Min, own[i].Max, own[i].ZMin, own[i].ZMax, i < 64 ? 1UL << i : 0UL);
+        }
+
         foreach (ObjectSurface o in cell.Objects)
         {
-            open.AddWalls(o.Walls);
+            foreach (WallPolygon w in o.Walls.Polygons)
+            {
+                open.Mark(w.Min, w.Max, w.ZMin, w.ZMax, 0UL);
+            }
         }
 
         foreach (PortalShape portal in cell.PortalShapes)
         {
-            open.Mark(portal.BoundsMin, portal.BoundsMax, float.NegativeInfinity, float.PositiveInfinity, portal: true);
+            open.Mark(portal.BoundsMin, portal.BoundsMax, float.NegativeInfinity, float.PositiveInfinity, 0UL, portal: true);
         }
 
         return open;
@@ -95,16 +105,28 @@ internal sealed class OpenFloor
         return true;
     }
 
-    private void AddWalls(CellWalls walls)
+    /// <summary>
+    /// The cell's own walls whose bounds may meet <paramref name="lo"/>–<paramref name="hi"/>: bit i for polygon i of its
+    /// <see cref="CellSurface.Walls"/> (the first 64; a cell with more is read whole). A box reaching past the floor's
+    /// squares reads the border squares, which hold every wall beyond them.
+    /// </summary>
+    public ulong WallsNear(Vector2 lo, Vector2 hi)
     {
-        foreach (WallPolygon w in walls.Polygons)
+        ulong near = 0;
+        (int c0, int c1, int r0, int r1) = Squares(lo, hi);
+        for (int c = c0; c <= c1; c++)
         {
-            Mark(w.Min, w.Max, w.ZMin, w.ZMax, portal: false);
+            for (int r = r0; r <= r1; r++)
+            {
+                near |= _walls[(c * _rows) + r];
+            }
         }
+
+        return near;
     }
 
-    /// <summary>Notes a wall (or portal) with bounds <paramref name="min"/>–<paramref name="max"/> in every square they meet; bounds beyond the floor's squares are noted in the border squares.</summary>
-    private void Mark(Vector2 min, Vector2 max, float zMin, float zMax, bool portal)
+    /// <summary>Notes a wall (<paramref name="bit"/>: its own wall's, else 0) or a portal with bounds <paramref name="min"/>–<paramref name="max"/> in every square they meet; bounds beyond the floor's squares are noted in the border squares.</summary>
+    private void Mark(Vector2 min, Vector2 max, float zMin, float zMax, ulong bit, bool portal = false)
     {
         (int c0, int c1, int r0, int r1) = Squares(min, max);
         for (int c = c0; c <= c1; c++)
@@ -114,6 +136,7 @@ internal sealed class OpenFloor
                 int i = (c * _rows) + r;
                 (_bottom[i], _top[i]) = (MathF.Min(_bottom[i], zMin), MathF.Max(_top[i], zMax));
                 _portal[i] |= portal;
+                _walls[i] |= bit;
             }
         }
     }
