@@ -92,6 +92,8 @@ public sealed partial class CellSurface
 
         (FloorMin, FloorMax) = FloorBounds(_floors);
         _grid = _floors.Length > PhysicsConstants.FloorGridMinTriangles ? new FloorGrid(_floors, FloorMin, FloorMax) : null;
+        PortalExtents = Array.ConvertAll(_portalShapes, static p => WallExtent.Pack(p.BoundsMin, p.BoundsMax));
+        OpenFloor = OpenFloor.Build(this);
     }
 
     /// <summary>The engine's copy of <paramref name="cell"/> with the objects standing in it (its <c>StaticObjects</c>), and whether its building has a registered shell.</summary>
@@ -109,7 +111,15 @@ public sealed partial class CellSurface
         Walls = cell.Walls;
         Objects = objects;
         IsShelled = shelled;
+        PortalExtents = cell.PortalExtents;
+        OpenFloor = objects.Length == 0 ? cell.OpenFloor : OpenFloor.Build(this); // the objects' walls are in it
     }
+
+    /// <summary>Its portals' bounds seen from above, packed (<see cref="WallExtent.Pack"/>), in its portals' order.</summary>
+    internal System.Runtime.Intrinsics.Vector128<float>[] PortalExtents { get; }
+
+    /// <summary>Where its floor is open to a body (<see cref="Physics.OpenFloor"/>), with the objects standing in it; null without a floor.</summary>
+    internal OpenFloor? OpenFloor { get; }
 
     /// <summary>Whether the cell has any walkable floor (a stairwell shaft has none).</summary>
     internal bool HasFloor => _floors.Length > 0;

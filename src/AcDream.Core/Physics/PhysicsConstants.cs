@@ -197,5 +197,5 @@ public static class PhysicsConstants
     internal const float NearMargin = 0.01f;
 
     /// <summary>The side of a square of a cell's open floor (<see cref="OpenFloor"/>), metres.</summary>
-    internal const float OpenFloorSquare = 0.5f;
+    internal const float OpenFloorSquare = 1f;
 }

@@ -38,7 +38,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         float reach = q.Delta.Length() + body.Radius + skin + PhysicsConstants.ContactTolerance; // every sweep of the slide stays this near the start
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         var move = BodyMove.Of(local, q.Delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height);
-        if (cellIndex >= 0 && entry.OpenFloors[cellIndex] is OpenFloor open)
+        if (cellIndex >= 0 && entry.Cells[cellIndex].OpenFloor is OpenFloor open)
         {
             // On open floor: no wall reaches into the sweep's box and band, and no portal into the wall set's box, so the
             // slide below would touch nothing; its path is the move itself, as the slide writes it.

@@ -64,7 +64,7 @@ internal ref struct WallSet
         {
             int cell = list[i] & (ObjectBit - 1);
             int[] targets = entry.PortalTargets[cell];
-            ReadOnlySpan<Vector128<float>> extents = entry.PortalExtents[cell].AsSpan(0, targets.Length);
+            ReadOnlySpan<Vector128<float>> extents = entry.Cells[cell].PortalExtents.AsSpan(0, targets.Length);
             for (int k = 0; k < extents.Length; k++)
             {
                 if (targets[k] >= 0 && Vector128.LessThanOrEqualAll(extents[k], query)
@@ -249,7 +249,7 @@ internal ref struct WallSet
 
             CellSurface cell = of.Cells[index];
             _hit.Current = new WallSource(SurfaceKind.CellWall, cell.CellId);
-            ulong near = of.OpenFloors[index] is OpenFloor open ? open.WallsNear(boxLo, boxHi) : ulong.MaxValue;
+            ulong near = cell.OpenFloor is OpenFloor open ? open.WallsNear(boxLo, boxHi) : ulong.MaxValue;
             BodySweep.SweepWalls(cell.Walls, near, offset, new WallBox(boxLo, boxHi, _move.ZLow, _move.ZHigh), in _move, ref _hit);
             foreach (ObjectSurface o in cell.Objects)
             {

@@ -3,7 +3,7 @@ using System.Numerics;
 namespace AcDream.Core.Physics;
 
 /// <summary>
-/// Where a cell's floor is open, built once per landblock entry: squares of <see cref="PhysicsConstants.OpenFloorSquare"/>
+/// Where a cell's floor is open, built with the cell (and again with the objects placed in it): squares of <see cref="PhysicsConstants.OpenFloorSquare"/>
 /// over the floor's bounds, each with the height span (lowest bottom to highest top) of the walls whose bounds meet it
 /// (the cell's own and its objects'), and whether a portal's bounds meet it. A body move whose sweep box's squares hold
 /// no wall reaching into its height band, and whose wall-set box's squares hold no portal, meets no wall: its planner
@@ -15,20 +15,13 @@ internal sealed class OpenFloor
     private readonly Vector2 _min;
     private readonly int _columns;
     private readonly int _rows;
-    private readonly float[] _bottom;
-    private readonly float[] _top;
-    private readonly bool[] _portal;
-    private readonly ulong[] _walls;
+    private readonly Square[] _squares;
 
     private OpenFloor(Vector2 min, int columns, int rows)
     {
         (_min, _columns, _rows) = (min, columns, rows);
-        _bottom = new float[columns * rows];
-        _top = new float[columns * rows];
-        _portal = new bool[columns * rows];
-        _walls = new ulong[columns * rows];
-        Array.Fill(_bottom, float.PositiveInfinity);
-        Array.Fill(_top, float.NegativeInfinity);
+        _squares = new Square[columns * rows];
+        Array.Fill(_squares, new Square { Bottom = float.PositiveInfinity, Top = float.NegativeInfinity });
     }
 
     /// <summary>The open floor of <paramref name="cell"/> (with the objects standing in it); null when it has no floor.</summary>
@@ -82,7 +75,7 @@ internal sealed class OpenFloor
         {
             for (int r = r0; r <= r1; r++)
             {
-                if (_portal[(c * _rows) + r])
+                if (_squares[(c * _rows) + r].Portal)
                 {
                     return false;
                 }
@@ -94,8 +87,8 @@ internal sealed class OpenFloor
         {
             for (int r = r0; r <= r1; r++)
             {
-                int i = (c * _rows) + r;
-                if (_top[i] > zLow && _bottom[i] < zHigh)
+                ref readonly Square square = ref _squares[(c * _rows) + r];
+                if (square.Top > zLow && square.Bottom < zHigh)
                 {
                     return false;
                 }
@@ -118,7 +111,7 @@ internal sealed class OpenFloor
         {
             for (int r = r0; r <= r1; r++)
             {
-                near |= _walls[(c * _rows) + r];
+                near |= _squares[(c * _rows) + r].Walls;
             }
         }
 
@@ -133,10 +126,10 @@ internal sealed class OpenFloor
         {
             for (int r = r0; r <= r1; r++)
             {
-                int i = (c * _rows) + r;
-                (_bottom[i], _top[i]) = (MathF.Min(_bottom[i], zMin), MathF.Max(_top[i], zMax));
-                _portal[i] |= portal;
-                _walls[i] |= bit;
+                ref Square square = ref _squares[(c * _rows) + r];
+                (square.Bottom, square.Top) = (MathF.Min(square.Bottom, zMin), MathF.Max(square.Top, zMax));
+                square.Portal |= portal;
+                square.Walls |= bit;
             }
         }
     }
@@ -152,4 +145,13 @@ internal sealed class OpenFloor
 
     private static int Index(float offset, int count) =>
         Math.Clamp((int)MathF.Floor(offset / PhysicsConstants.OpenFloorSquare), 0, count - 1);
+
+    /// <summary>One square: the height span of the walls meeting it, which of the cell's own walls do, and whether a portal does.</summary>
+    private struct Square
+    {
+        public float Bottom;
+        public float Top;
+        public ulong Walls;
+        public bool Portal;
+    }
 }

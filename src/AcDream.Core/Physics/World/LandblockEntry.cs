@@ -1,5 +1,4 @@
 using System.Numerics;
-using System.Runtime.Intrinsics;
 
 namespace AcDream.Core.Physics;
 
@@ -52,18 +51,6 @@ internal sealed class LandblockEntry
             PortalTargets[i] = targets;
         }
 
-        OpenFloors = Array.ConvertAll(cells, OpenFloor.Build);
-        PortalExtents = new Vector128<float>[cells.Length][];
-        for (int i = 0; i < cells.Length; i++)
-        {
-            ReadOnlySpan<PortalShape> shapes = cells[i].PortalShapes;
-            PortalExtents[i] = new Vector128<float>[shapes.Length];
-            for (int k = 0; k < shapes.Length; k++)
-            {
-                PortalExtents[i][k] = WallExtent.Pack(shapes[k].BoundsMin, shapes[k].BoundsMax);
-            }
-        }
-
         EntryBuckets = BuildBuckets(cells);
         CellGroups = Groups(PortalTargets, out int outdoors);
         MetOutdoors = Array.ConvertAll(CellGroups, g => g == outdoors);
@@ -113,12 +100,6 @@ internal sealed class LandblockEntry
 
     /// <summary>Per cell, per portal: index of the neighbour in <see cref="Cells"/>, <see cref="OutdoorTarget"/> or <see cref="MissingCell"/>.</summary>
     public int[][] PortalTargets { get; }
-
-    /// <summary>Per cell, where its floor is open (<see cref="OpenFloor"/>); null for a cell without a floor.</summary>
-    public OpenFloor?[] OpenFloors { get; }
-
-    /// <summary>Per cell, its portals' bounds seen from above, packed (<see cref="WallExtent.Pack"/>), in its portals' order.</summary>
-    public Vector128<float>[][] PortalExtents { get; }
 
     /// <summary>
     /// Per outdoor cell (index <see cref="CellIds.OutdoorCellNumber"/> − 1): the indices of the cells whose floor bounds overlap it.
