@@ -31,7 +31,7 @@ public sealed partial class PhysicsEngine
         var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
         SurfaceContact wall = default;
         query.Met = ref wall;
-        ResolveResult result = Move(ref query);
+        ResolveResult result = Move(ref query, in options);
         report = Report(ref lands, in result, wall);
         return result;
     }

@@ -198,14 +198,13 @@ public sealed partial class PhysicsEngine
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var lands = new Neighbourhood(_registry);
         var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
-        return Move(ref query);
+        return Move(ref query, in options);
     }
 
     /// <summary>The move of a checked call: a body's among the walls near it, else the point's (<see cref="PointMover"/>).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private ResolveResult Move(ref MoveQuery query)
+    private ResolveResult Move(ref MoveQuery query, in MovementOptions options)
     {
-        ref readonly MovementOptions options = ref query.Options;
         if (options.Body is MoverBody body && (query.Delta == Vector2.Zero || !_planner.IsOpenGround(ref query, query.Delta, body)))
         {
             return _body.Resolve(ref query, contourLeft: true);

@@ -168,7 +168,7 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
     private ResolveResult WalkTerrain(ref MoveQuery q, float terrainZ, bool onObject)
     {
         LandblockEntry there = q.Entry;
-        if (q.Options.DoorsOnly && StepsIntoStorey(there, q.P0, q.Z, q.P1, terrainZ, out int storey))
+        if (q.Options.DoorsOnly && StepsIntoStorey(there, q.P0, q.Z, q.P1, terrainZ) is int storey and >= 0)
         {
             q.Meet(SurfaceKind.CellWall, there.Cells[storey].CellId);
             return Refuse(ref q, ResolveOutcome.OuterWall);
@@ -255,27 +255,24 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
         entry.Cells[cellIndex].TrySampleFloor(p0.X, p0.Y, z, out float floorHere) && MathF.Abs(floorHere - z) <= stepUp;
 
     /// <summary>
-    /// Doors only: whether a move from feet at (<paramref name="p0"/>, <paramref name="z0"/>) to feet at
-    /// (<paramref name="p1"/>, <paramref name="z1"/>) (landblock-local) steps into the storey of a cell
-    /// from outside it: onto its floor outline where the floor is a storey at the feet
+    /// Doors only: the cell (its index; −1 for none) whose storey a move from feet at (<paramref name="p0"/>, <paramref name="z0"/>)
+    /// to feet at (<paramref name="p1"/>, <paramref name="z1"/>) (landblock-local) steps into from outside it: onto its floor outline where the floor is a storey at the feet
     /// (<see cref="PhysicsConstants.StoreyBelow"/> below to <see cref="PhysicsConstants.StoreyAbove"/> above),
     /// from where it was not. That is through the building's outer wall.
     /// </summary>
-    private static bool StepsIntoStorey(LandblockEntry entry, Vector2 p0, float z0, Vector2 p1, float z1, out int cellIndex)
+    private static int StepsIntoStorey(LandblockEntry entry, Vector2 p0, float z0, Vector2 p1, float z1)
     {
-        cellIndex = -1;
         foreach (int i in entry.EntryBuckets[CellIds.OutdoorCellNumberUnchecked(p1.X, p1.Y) - 1])
         {
             CellSurface cell = entry.Cells[i];
             if (!cell.IsShelled && cell.TrySampleFloor(p1.X, p1.Y, z1, out float there) && IsStorey(there - z1) && !IsPastOutdoorDoorway(entry, i, p1)
                 && !(cell.TrySampleFloor(p0.X, p0.Y, z0, out float here) && IsStorey(here - z0)))
             {
-                cellIndex = i;
-                return true;
+                return i;
             }
         }
 
-        return false;
+        return -1;
 
         static bool IsStorey(float rise) => rise >= -PhysicsConstants.StoreyBelow && rise <= PhysicsConstants.StoreyAbove;
     }
