@@ -201,11 +201,17 @@ internal static class Answers
     /// above it by no more than the step-down height, are put on it; feet higher keep their Z and are
     /// airborne, so the caller's gravity acts.
     /// </summary>
-    public static ResolveResult Refuse(in WorldFrame frame, ref MoveQuery q, in Standing stay, float? ground, ResolveOutcome why, Vector3 normal = default)
+    public static ResolveResult Refuse(in WorldFrame frame, ref MoveQuery q, in Standing stay, float? ground, ResolveOutcome why, Vector3 normal = default) =>
+        RefuseAt(in frame, stay.X, stay.Y, stay.Local, q.Z, ground, stay.CellId, in q.Options, why, normal);
+
+    /// <summary>
+    /// <see cref="Refuse"/> on plain values. Its ten parameters are measured: the same body reading the query and the
+    /// place by reference (or one value of the outcome and normal) made the refusal-heavy rows (walkable slope, the
+    /// player's options outdoors) 10–15 % slower.
+    /// </summary>
+    private static ResolveResult RefuseAt(in WorldFrame frame, int lbX, int lbY, Vector2 local, float z, float? ground, uint cellId, in MovementOptions options, ResolveOutcome why, Vector3 normal)
     {
-        (float z, uint cellId) = (q.Z, stay.CellId);
-        ref readonly MovementOptions options = ref q.Options;
-        var at = frame.ToWorld(stay.X, stay.Y, stay.Local, z);
+        var at = frame.ToWorld(lbX, lbY, local, z);
         bool onGround = false;
         if (ground is float g)
         {
