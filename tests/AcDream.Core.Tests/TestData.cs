@@ -113,6 +113,28 @@ internal static class RealObjects
     public static List<ObjectSurface> HoltburgBuildings() =>
         ObjectSurface.FromLandblock(TestData.Holtburg, ObjectPlacements.HoltburgInfo(), [], GfxObjs, NoSetups);
 
+    /// <summary>
+    /// Holtburg as a host registers it with the cellar stairs: the real cells, the buildings, the stairs as the
+    /// cellars' static objects, on flat terrain at 94 m, and the landblock south of it; in the global frame or centred
+    /// on Holtburg.
+    /// </summary>
+    public static PhysicsEngine HoltburgWithCellarStairs(string frame)
+    {
+        PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(TestData.Holtburg);
+        var gfxObjs = new Dictionary<uint, GfxObj>(GfxObjs);
+        var cells = new List<EnvCell>();
+        foreach ((uint cellId, GfxObj stair, Stab placement) in ObjectPlacements.CellarStairs())
+        {
+            gfxObjs.Add(stair.Id, stair);
+            cells.Add(new EnvCell { Id = cellId, StaticObjects = [placement] });
+        }
+
+        List<ObjectSurface> objects = ObjectSurface.FromLandblock(TestData.Holtburg, ObjectPlacements.HoltburgInfo(), cells, gfxObjs, NoSetups);
+        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), HoltburgCells.Surfaces(), objects);
+        engine.AddLandblock(0xA9B3FFFFu, TestData.FlatTerrain(94f, 0xA9B3FFFFu), []);
+        return engine;
+    }
+
     /// <summary>The eight stair pieces of landblock 0xF682.</summary>
     public static List<ObjectSurface> Staircase() =>
         ObjectSurface.FromLandblock(ObjectPlacements.StaircaseLandblock, ObjectPlacements.StaircaseInfo(), [], GfxObjs, NoSetups);

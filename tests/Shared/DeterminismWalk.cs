@@ -134,13 +134,9 @@ internal static class DeterminismWalk
         return objects;
     }
 
-    /// <summary>A square floor of half-side <paramref name="half"/> at z 0, with 2 m sides below it or none.</summary>
-    private static GfxObj Platform(uint id, float half, bool walls)
+    /// <summary>Adds <paramref name="polygons"/> (vertex loops, object-local, each with its own vertices) to <paramref name="gfx"/> as physics polygons; returns it.</summary>
+    public static GfxObj AddPhysicsPolygons(GfxObj gfx, Vector3[][] polygons)
     {
-        var gfx = new GfxObj { Id = id };
-        Vector3[][] polygons = walls
-            ? [Square(half), Side(-half, -half, half, -half), Side(half, -half, half, half), Side(half, half, -half, half), Side(-half, half, -half, -half)]
-            : [Square(half)];
         ushort next = 0;
         for (int p = 0; p < polygons.Length; p++)
         {
@@ -155,6 +151,15 @@ internal static class DeterminismWalk
         }
 
         return gfx;
+    }
+
+    /// <summary>A square floor of half-side <paramref name="half"/> at z 0, with 2 m sides below it or none.</summary>
+    private static GfxObj Platform(uint id, float half, bool walls)
+    {
+        Vector3[][] polygons = walls
+            ? [Square(half), Side(-half, -half, half, -half), Side(half, -half, half, half), Side(half, half, -half, half), Side(-half, half, -half, -half)]
+            : [Square(half)];
+        return AddPhysicsPolygons(new GfxObj { Id = id }, polygons);
 
         static Vector3[] Square(float h) => [new(-h, -h, 0f), new(h, -h, 0f), new(h, h, 0f), new(-h, h, 0f)];
 

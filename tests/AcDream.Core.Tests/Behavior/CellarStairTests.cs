@@ -22,22 +22,7 @@ public class CellarStairTests
     private const uint BuildingBRoom = 0xA9B40171; // the room around building B's opening (shaft 0x0175)
 
     /// <summary>The engine as a host registers the scene: the cells, the buildings, and the stairs as the cellars' static objects.</summary>
-    private static PhysicsEngine Engine(string frame)
-    {
-        PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(TestData.Holtburg);
-        var gfxObjs = new Dictionary<uint, GfxObj>(RealObjects.GfxObjs);
-        var cells = new List<EnvCell>();
-        foreach ((uint cellId, GfxObj stair, Stab placement) in ObjectPlacements.CellarStairs())
-        {
-            gfxObjs.Add(stair.Id, stair);
-            cells.Add(new EnvCell { Id = cellId, StaticObjects = [placement] });
-        }
-
-        List<ObjectSurface> objects = ObjectSurface.FromLandblock(TestData.Holtburg, ObjectPlacements.HoltburgInfo(), cells, gfxObjs, RealObjects.NoSetups);
-        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), HoltburgCells.Surfaces(), objects);
-        engine.AddLandblock(0xA9B3FFFFu, TestData.FlatTerrain(94f, 0xA9B3FFFFu), []);
-        return engine;
-    }
+    private static PhysicsEngine Engine(string frame) => RealObjects.HoltburgWithCellarStairs(frame);
 
     /// <summary>A recorded ramp of <c>captured-walkables.json</c>: its vertices and plane, landblock-local.</summary>
     private sealed record Ramp(Vector3[] Vertices, Vector3 Normal, float D)

@@ -48,7 +48,7 @@ public sealed class MoveReportTests(ITestOutputHelper output)
         r.Outcome.Should().BeOneOf([ResolveOutcome.Wall, ResolveOutcome.OuterWall, ResolveOutcome.Slid], mover);
         report.Wall.Should().Be(new SurfaceContact(SurfaceKind.BuildingShell, ObjectPlacements.CottageShell, r.SurfaceNormal), mover);
         report.Wall.Normal.X.Should().BeGreaterThan(0.9f, "the shell's east wall faces east");
-        report.Floor.Should().Be(new SurfaceContact(SurfaceKind.Terrain, (TestData.Holtburg & 0xFFFF0000u) | r.CellId & 0xFFFF, Vector3.UnitZ), mover);
+        report.Floor.Should().Be(new SurfaceContact(SurfaceKind.Terrain, r.CellId, Vector3.UnitZ), mover);
     }
 
     [Theory]
@@ -90,5 +90,37 @@ public sealed class MoveReportTests(ITestOutputHelper output)
         ResolveResult open = engine.Resolve(engine.ToWorld(Outdoors, new Vector3(60f, 60f, 94f)), Outdoors, new Vector3(0.2f, 0f, 0f), 0.6f, default, out MoveReport field);
         field.Floor.Should().Be(new SurfaceContact(SurfaceKind.Terrain, open.CellId, Vector3.UnitZ));
         field.Wall.Kind.Should().Be(SurfaceKind.None);
+    }
+
+    [Theory]
+    [MemberData(nameof(Movers))]
+    public void Walking_into_a_cellar_wall_names_the_cell(string mover, MovementOptions options, uint centre)
+    {
+        PhysicsEngine engine = World(centre);
+        FloorTriangleInfo t = HoltburgCells.Surface(ObjectPlacements.CottageCellar).GetFloorTriangles()[0];
+        Vector3 start = engine.ToWorld(Outdoors, (t.A + t.B + t.C) / 3f);
+        var cells = HoltburgCells.Fixtures.Keys.ToHashSet();
+        int named = 0;
+        for (int k = 0; k < 8; k++)
+        {
+            float angle = k * MathF.PI / 4f;
+            var delta = new Vector3(6f * MathF.Cos(angle), 6f * MathF.Sin(angle), 0f);
+            ResolveResult r = engine.Resolve(start, ObjectPlacements.CottageCellar, delta, 0.6f, in options, out MoveReport report);
+            engine.Resolve(start, ObjectPlacements.CottageCellar, delta, 0.6f, in options).Should().Be(r, $"{mover}, heading {k}: the same answer without the report");
+            output.WriteLine($"{mover}, heading {k}: {r}; {report}");
+            bool walled = r.Outcome is ResolveOutcome.Wall or ResolveOutcome.OuterWall || (r.Outcome == ResolveOutcome.Slid && r.SurfaceNormal.Z == 0f);
+            if (!walled)
+            {
+                report.Wall.Should().Be(default(SurfaceContact), $"{mover}, heading {k}: {r}");
+                continue;
+            }
+
+            named++;
+            report.Wall.Kind.Should().Be(SurfaceKind.CellWall, $"{mover}, heading {k}: {r}");
+            cells.Should().Contain(report.Wall.Id, $"{mover}, heading {k}: a wall of one of Holtburg's cells");
+            report.Wall.Normal.Should().Be(r.SurfaceNormal);
+        }
+
+        named.Should().BeGreaterThanOrEqualTo(4, $"{mover}: 6 m moves out of the cellar meet its walls");
     }
 }

@@ -14,22 +14,7 @@ namespace AcDream.Core.Tests.Regression;
 /// </summary>
 public class StairOverlapTests
 {
-    private static PhysicsEngine Engine(string frame)
-    {
-        PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(TestData.Holtburg);
-        var gfxObjs = new Dictionary<uint, GfxObj>(RealObjects.GfxObjs);
-        var cells = new List<EnvCell>();
-        foreach ((uint cellId, GfxObj stair, Stab placement) in ObjectPlacements.CellarStairs())
-        {
-            gfxObjs.Add(stair.Id, stair);
-            cells.Add(new EnvCell { Id = cellId, StaticObjects = [placement] });
-        }
-
-        List<ObjectSurface> objects = ObjectSurface.FromLandblock(TestData.Holtburg, ObjectPlacements.HoltburgInfo(), cells, gfxObjs, RealObjects.NoSetups);
-        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), HoltburgCells.Surfaces(), objects);
-        engine.AddLandblock(0xA9B3FFFFu, TestData.FlatTerrain(94f, 0xA9B3FFFFu), []);
-        return engine;
-    }
+    private static PhysicsEngine Engine(string frame) => RealObjects.HoltburgWithCellarStairs(frame);
 
     private static MovementOptions Short => MovementOptions.Player with { Body = new MoverBody(0.48f, 1.2f) };
 

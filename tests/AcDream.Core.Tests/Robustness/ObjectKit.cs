@@ -8,24 +8,8 @@ namespace AcDream.Core.Tests.Robustness;
 internal static class ObjectKit
 {
     /// <summary>A GfxObj from polygons given as vertex loops (object-local), each polygon with its own vertices.</summary>
-    public static GfxObj Gfx(uint id, params Vector3[][] polygons)
-    {
-        var gfx = new GfxObj { Id = id, Flags = GfxObjFlags.HasPhysics };
-        ushort next = 0;
-        for (int p = 0; p < polygons.Length; p++)
-        {
-            var ids = new List<short>();
-            foreach (Vector3 v in polygons[p])
-            {
-                gfx.VertexArray.Vertices[next] = new SWVertex { Origin = v };
-                ids.Add((short)next++);
-            }
-
-            gfx.PhysicsPolygons[(ushort)p] = new Polygon { VertexIds = ids };
-        }
-
-        return gfx;
-    }
+    public static GfxObj Gfx(uint id, params Vector3[][] polygons) =>
+        AcDream.Testing.DeterminismWalk.AddPhysicsPolygons(new GfxObj { Id = id, Flags = GfxObjFlags.HasPhysics }, polygons);
 
     /// <summary>A tree: a Setup of one part with no polygons and one cylinder.</summary>
     public static (Setup Setup, Dictionary<uint, GfxObj> Parts) Tree(float radius = 0.4f, float height = 5f)

@@ -20,19 +20,23 @@ internal sealed class BodyPlanner(WorldFrame frame)
     [SkipLocalsInit] // the stack buffers are written before they are read
     public bool Plan(ref MoveQuery q, MoverBody body, scoped Span<Vector2> points, ref BodyPath path, out int lbX, out int lbY)
     {
-        bool found = Locator.TryFind(frame, ref q.Lands, q.Position, q.CellId, out Place place);
-        (lbX, lbY) = (place.X, place.Y);
-        if (!found)
+        Place place;
+        if (q.CellIndex == MoveQuery.Outdoors)
         {
+            place = new Place(q.Here!, q.Here!.X, q.Here.Y, q.P0, -1); // located by the open-ground test
+        }
+        else if (!Locator.TryFind(frame, ref q.Lands, q.Position, q.CellId, out place))
+        {
+            (lbX, lbY) = (place.X, place.Y);
             return false;
         }
 
+        (lbX, lbY) = (place.X, place.Y);
         (Vector2 local, LandblockEntry entry, int cellIndex) = (place.Local, place.Entry, place.CellIndex);
         if (cellIndex >= 0)
         {
             (q.Entry, q.P0, q.CellIndex) = (entry, local, cellIndex); // located once: the point move of the free path starts here
         }
-
 
         float skin = Skin(lbX, lbY, local, q.Delta.Length() + body.Radius);
         float reach = q.Delta.Length() + body.Radius + skin + PhysicsConstants.ContactTolerance; // every sweep of the slide stays this near the start
