@@ -176,7 +176,8 @@ public sealed class MainJobTests : IDisposable
     }
 
     [Theory]
-    [InlineData("\"player\"", 1.5f, true, 0.48f, true, 0.48f, 1.835f)]
+    [InlineData("\"player\"", 1.5f, true, 0.48f, true, 0.48f, 1.835f, true)]
+    [InlineData("{ \"body\": \"player\", \"vertical\": true, \"footing\": true, \"edgeSlide\": true }", null, false, null, false, 0.48f, 1.835f, true)]
     [InlineData("\"literal\"", null, false, null, false, null, null)]
     [InlineData("{ \"stepDownHeight\": 2, \"doorsOnly\": true }", 2f, false, null, true, null, null)]
     [InlineData("{ \"walkableSlope\": true, \"sweepStepLength\": 0.3 }", null, true, 0.3f, false, null, null)]
@@ -184,11 +185,12 @@ public sealed class MainJobTests : IDisposable
     [InlineData("{ \"body\": { \"radius\": 0.3, \"height\": 1.2 } }", null, false, null, false, 0.3f, 1.2f)]
     [InlineData("{ \"body\": { \"height\": 100, \"radius\": 10 } }", null, false, null, false, 10f, 100f)]
     [InlineData("{ \"walkableSlope\": true, \"body\": null }", null, true, null, false, null, null)]
-    public void SceneReader_Effects_ReadAsMovementOptions(string effects, float? stepDown, bool slope, float? sweep, bool doors, float? radius, float? height)
+    public void SceneReader_Effects_ReadAsMovementOptions(string effects, float? stepDown, bool slope, float? sweep, bool doors, float? radius, float? height, bool threeD = false)
     {
         Scene scene = SceneReader.Parse($$"""{ "name": "t", "start": { "position": [10, 10] }, "effects": {{effects}}, "legs": [ { "name": "a", "to": [11, 10] } ] }""", "test.json");
         MoverBody? body = radius is float r && height is float h ? new MoverBody(r, h) : null;
-        scene.Effects.Should().Be(new MovementOptions { StepDownHeight = stepDown, WalkableSlope = slope, SweepStepLength = sweep, DoorsOnly = doors, Body = body }, $"effects {effects}");
+        var expected = new MovementOptions { StepDownHeight = stepDown, WalkableSlope = slope, SweepStepLength = sweep, DoorsOnly = doors, Body = body, Vertical = threeD, Footing = threeD, EdgeSlide = threeD };
+        scene.Effects.Should().Be(expected, $"effects {effects}");
     }
 
     [Theory]

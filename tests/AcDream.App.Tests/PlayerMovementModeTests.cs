@@ -371,7 +371,7 @@ public class PlayerMovementModeTests
         table[1] = 300f;
         var engine = new PhysicsEngine(Holtburg);
         engine.AddLandblock(Holtburg, new TerrainSurface(Heights((x, _) => x <= 4 ? 1 : 0), table, Holtburg), []);
-        var mode = new PlayerMovementMode(engine, new Vector3(95f, 50f, 300f), 0xA9B40000u, MathF.PI / 2f, MovementOptions.Player);
+        var mode = new PlayerMovementMode(engine, new Vector3(95f, 50f, 300f), 0xA9B40000u, MathF.PI / 2f, MovementOptions.Player with { EdgeSlide = false });
 
         int frame = 0, airborne = 0;
         float lowestAirborneZ = float.MaxValue;
@@ -417,7 +417,7 @@ public class PlayerMovementModeTests
             world.Cells.Select(c => new CellSurface(c.CellId, c.EnvCell, c.CellStruct)).ToList());
 
         // Building B's main room 0x0171, walking west over its cellar shaft (x 152.93–154.93).
-        var mode = new PlayerMovementMode(engine, new Vector3(155.3f, 8.4f, 94f), 0xA9B40171u, -MathF.PI / 2f, MovementOptions.Player);
+        var mode = new PlayerMovementMode(engine, new Vector3(155.3f, 8.4f, 94f), 0xA9B40171u, -MathF.PI / 2f, MovementOptions.Player with { EdgeSlide = false });
         int frame = 0, airborne = 0;
         while (frame < 300 && (airborne == 0 || !mode.IsOnGround))
         {

@@ -23,6 +23,11 @@ namespace AcDream.App.Movement;
 /// radius 0.48 m and 1.835 m tall; the default scene uses it) every step moves that body: it stops its
 /// radius short of walls and slides along them, and <see cref="Update"/> reports the steps the engine
 /// answered <see cref="ResolveOutcome.Slid"/> with the wall's normal. The body is kept while airborne.
+/// With <see cref="MovementOptions.Vertical"/> (in <see cref="MovementOptions.Player"/>) the mode moves no Z itself: it
+/// passes each step's vertical displacement (exact for constant gravity: the mean of the speeds before and after, times
+/// the step) in the delta's Z, and the engine stops the rise under ceilings and lands the fall on the first floor; a
+/// head hit (<see cref="ResolveOutcome.Ceiling"/>) zeroes the upward speed, a landing the downward speed. It can jump
+/// (<see cref="Jump"/>, <see cref="MovementIntent.Jump"/>).
 /// </remarks>
 public sealed class PlayerMovementMode
 {
@@ -50,10 +55,19 @@ public sealed class PlayerMovementMode
     /// <summary>Longest frame simulated: 1 s, so at most 10 steps; a longer frame is clamped to it (see <see cref="Update"/>).</summary>
     public const float MaxFrameSeconds = 1f;
 
+    /// <summary>Jump skill by default: 100, which jumps 1.64 m at full power (the game's formula: see <see cref="JumpHeight"/>).</summary>
+    public const int DefaultJumpSkill = 100;
+
+    /// <summary>The lowest jump: 0.35 m, the game's.</summary>
+    public const float MinJumpHeight = 0.35f;
+
     private readonly PhysicsEngine _engine;
 
     /// <summary><see cref="Effects"/> while airborne: step down 0, so the mover lands only when its Z reaches the ground.</summary>
     private readonly MovementOptions _fallingEffects;
+
+    /// <summary>Whether the engine moves the body vertically (<see cref="MovementOptions.Vertical"/> with a body): the mode passes its fall in the delta.</summary>
+    private readonly bool _vertical;
 
     /// <summary>Places the mover; it starts on the ground, not moving vertically.</summary>
     /// <param name="engine">The engine to resolve against.</param>
@@ -73,6 +87,7 @@ public sealed class PlayerMovementMode
         _engine = engine;
         Effects = effects;
         _fallingEffects = effects.StepDownHeight is null ? effects : effects with { StepDownHeight = 0f };
+        _vertical = effects.Vertical && effects.Body.HasValue;
         Position = position;
         CellId = cellId;
         Heading = heading;
@@ -93,6 +108,46 @@ public sealed class PlayerMovementMode
             : throw new ArgumentOutOfRangeException(nameof(RunMetresPerSecond), value, "a run's speed must be finite, above 0 and at most 50 m/s.");
     } = RunSpeed;
 
+    /// <summary>The jump skill (the game's character skill), ≥ 0.</summary>
+    /// <value><see cref="DefaultJumpSkill"/> (100).</value>
+    /// <exception cref="ArgumentOutOfRangeException">On set: negative.</exception>
+    public int JumpSkill
+    {
+        get;
+        set => field = value >= 0 ? value : throw new ArgumentOutOfRangeException(nameof(JumpSkill), value, "the jump skill must be ≥ 0.");
+    } = DefaultJumpSkill;
+
+    /// <summary>The jump's power, 0..1 (how long the jump key was held, in the game).</summary>
+    /// <value>1 (full power).</value>
+    /// <exception cref="ArgumentOutOfRangeException">On set: not within 0..1.</exception>
+    public float JumpPower
+    {
+        get;
+        set => field = value is >= 0f and <= 1f ? value : throw new ArgumentOutOfRangeException(nameof(JumpPower), value, "the jump's power must be within 0..1.");
+    } = 1f;
+
+    /// <summary>
+    /// How high a jump rises, metres: the game's (skill / (skill + 1300) · 22.2 + 0.05) · power, at least
+    /// <see cref="MinJumpHeight"/> (0.35 m); 1.64 m with the defaults.
+    /// </summary>
+    public float JumpHeight => MathF.Max(MinJumpHeight, ((JumpSkill / (JumpSkill + 1300f) * 22.2f) + 0.05f) * JumpPower);
+
+    /// <summary>
+    /// Jumps if on the ground and the effects move the body vertically (<see cref="MovementOptions.Vertical"/> with a body):
+    /// the upward speed becomes √(2 g h) for <see cref="JumpHeight"/> h. Returns whether it jumped.
+    /// </summary>
+    public bool Jump()
+    {
+        if (!IsOnGround || !_vertical)
+        {
+            return false;
+        }
+
+        VerticalSpeed = MathF.Sqrt(2f * -Gravity * JumpHeight);
+        IsOnGround = false;
+        return true;
+    }
+
     /// <summary>Feet position, world metres.</summary>
     public Vector3 Position { get; private set; }
 
@@ -109,7 +164,7 @@ public sealed class PlayerMovementMode
     /// <summary>Whether the last step stood on terrain or a floor.</summary>
     public bool IsOnGround { get; private set; }
 
-    /// <summary>Vertical speed, m/s (negative: falling); 0 on the ground, never below −<see cref="MaxFallSpeed"/>.</summary>
+    /// <summary>Vertical speed, m/s (negative: falling, positive: rising after a jump); 0 on the ground, never below −<see cref="MaxFallSpeed"/>.</summary>
     public float VerticalSpeed { get; private set; }
 
     /// <summary>
@@ -139,15 +194,20 @@ public sealed class PlayerMovementMode
         frameSeconds = MathF.Min(frameSeconds, MaxFrameSeconds);
         int steps = Math.Max(1, (int)MathF.Ceiling(frameSeconds / MaxStepSeconds));
         float dt = frameSeconds / steps;
-        int refused = 0, slid = 0;
+        int refused = 0, slid = 0, headHits = 0, landings = 0, edges = 0;
+        int jumps = intent.Jump && Jump() ? 1 : 0;
         ResolveOutcome? lastRefusal = null;
         Vector3 lastNormal = default, lastSlide = default;
         SurfaceContact wall = default;
         MoveReport report = default;
         for (int i = 0; i < steps; i++)
         {
+            bool wasOnGround = IsOnGround;
             ResolveResult result = Step(intent, dt, out report);
             wall = report.Wall.Kind != SurfaceKind.None ? report.Wall : wall;
+            headHits += result.Outcome == ResolveOutcome.Ceiling ? 1 : 0;
+            landings += !wasOnGround && IsOnGround ? 1 : 0;
+            edges += result.Outcome == ResolveOutcome.Edge || report.Wall.Kind == SurfaceKind.FloorEdge ? 1 : 0;
             if (result.IsRefused)
             {
                 refused++;
@@ -161,7 +221,7 @@ public sealed class PlayerMovementMode
             }
         }
 
-        return new MovementFrame(steps, refused, lastRefusal, lastNormal, slid, lastSlide, report with { Wall = wall });
+        return new MovementFrame(steps, refused, lastRefusal, lastNormal, slid, lastSlide, report with { Wall = wall }, jumps, headHits, landings, edges);
     }
 
     /// <summary>One step of <paramref name="dt"/> seconds; returns the engine's answer and what it met.</summary>
@@ -180,20 +240,42 @@ public sealed class PlayerMovementMode
         Vector2 horizontal = move * ((intent.Run ? RunMetresPerSecond : WalkSpeed) * dt);
         var delta = new Vector3(horizontal, 0f);
 
-        Vector3 position = Position;
-        if (!IsOnGround)
+        ResolveResult result;
+        if (_vertical)
         {
-            VerticalSpeed = MathF.Max(VerticalSpeed + (Gravity * dt), -MaxFallSpeed);
-            position.Z += VerticalSpeed * dt;
+            // The engine moves the body up and down: the step's displacement under gravity, exact for a constant
+            // acceleration (the mean of the speeds before and after), in the delta's Z.
+            if (!IsOnGround || VerticalSpeed > 0f)
+            {
+                float before = VerticalSpeed;
+                VerticalSpeed = MathF.Max(VerticalSpeed + (Gravity * dt), -MaxFallSpeed);
+                delta.Z = 0.5f * (before + VerticalSpeed) * dt;
+            }
+
+            result = _engine.Resolve(Position, CellId, delta, StepUpHeight, Effects, out report);
+            if (result.Outcome == ResolveOutcome.Ceiling && VerticalSpeed > 0f)
+            {
+                VerticalSpeed = 0f; // a head hit
+            }
+        }
+        else
+        {
+            Vector3 position = Position;
+            if (!IsOnGround)
+            {
+                VerticalSpeed = MathF.Max(VerticalSpeed + (Gravity * dt), -MaxFallSpeed);
+                position.Z += VerticalSpeed * dt;
+            }
+
+            result = _engine.Resolve(position, CellId, delta, StepUpHeight, IsOnGround ? Effects : _fallingEffects, out report);
         }
 
-        ResolveResult result = _engine.Resolve(position, CellId, delta, StepUpHeight, IsOnGround ? Effects : _fallingEffects, out report);
         Position = result.Position;
         CellId = result.CellId;
         IsOnGround = result.IsOnGround;
-        if (IsOnGround)
+        if (result.IsOnGround && VerticalSpeed <= 0f)
         {
-            VerticalSpeed = 0f;
+            VerticalSpeed = 0f; // a landing, or standing
         }
 
         return result;

@@ -32,7 +32,7 @@ internal static class SceneReader
     /// <summary>Largest body height a scene may give, metres.</summary>
     public const float MaxBodyHeight = 100f;
 
-    private static readonly string[] EffectFields = ["stepDownHeight", "walkableSlope", "sweepStepLength", "doorsOnly", "body"];
+    private static readonly string[] EffectFields = ["stepDownHeight", "walkableSlope", "sweepStepLength", "doorsOnly", "body", "vertical", "footing", "edgeSlide"];
     private static readonly string[] BodyFields = ["radius", "height"];
     private static readonly string[] StartFields = ["position", "heading"];
     private static readonly string[] LegFields = ["name", "to", "forward", "strafe", "turn", "run", "backward", "seconds"];
@@ -200,6 +200,9 @@ internal static class SceneReader
             WalkableSlope = context.OptionalBool(element, "walkableSlope", "effects.walkableSlope"),
             SweepStepLength = element.TryGetProperty("sweepStepLength", out _) ? context.OptionalNumber(element, "sweepStepLength", "effects.sweepStepLength", 1f, 0.01f, 100f) : null,
             DoorsOnly = context.OptionalBool(element, "doorsOnly", "effects.doorsOnly"),
+            Vertical = context.OptionalBool(element, "vertical", "effects.vertical"),
+            Footing = context.OptionalBool(element, "footing", "effects.footing"),
+            EdgeSlide = context.OptionalBool(element, "edgeSlide", "effects.edgeSlide"),
             Body = element.TryGetProperty("body", out JsonElement body) ? ReadBody(context, body) : null,
         };
     }

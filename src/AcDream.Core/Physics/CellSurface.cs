@@ -124,6 +124,9 @@ public sealed partial class CellSurface
     /// <summary>Whether the cell has any walkable floor (a stairwell shaft has none).</summary>
     internal bool HasFloor => _floors.Length > 0;
 
+    /// <summary>The walkable triangles, landblock-local, as the floor queries sample them.</summary>
+    internal ReadOnlySpan<FloorTriangle> Floors => _floors;
+
     /// <summary>The objects standing in this cell (the engine's copy; empty on a caller's).</summary>
     internal ObjectSurface[] Objects { get; } = [];
 

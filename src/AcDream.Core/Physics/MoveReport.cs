@@ -28,6 +28,9 @@ public enum SurfaceKind : byte
 
     /// <summary>An object's cylinder (a tree's trunk, a post); the id is the object's GfxObj or Setup id.</summary>
     Cylinder,
+
+    /// <summary>The edge of a floor the body stood on and would have stepped off (edge slide); the id is the floor's: a cell's, or an object's GfxObj or Setup id (0 for the terrain's ground).</summary>
+    FloorEdge,
 }
 
 /// <summary>A surface a move met.</summary>

@@ -12,6 +12,7 @@ public readonly record struct MovementOptions
     private readonly float? _stepDownHeight;
     private readonly float? _sweepStepLength;
     private readonly MoverBody? _body;
+    private readonly Motion _motion;
 
     /// <summary>No effects: the spec's literal engine.</summary>
     public static MovementOptions Literal => default;
@@ -27,6 +28,9 @@ public readonly record struct MovementOptions
         SweepStepLength = 0.48f,
         DoorsOnly = true,
         Body = MoverBody.Player,
+        Vertical = true,
+        Footing = true,
+        EdgeSlide = true,
     };
 
     /// <summary>
@@ -95,5 +99,66 @@ public readonly record struct MovementOptions
         init => _body = value is not MoverBody b || b.IsValid
             ? value
             : throw new ArgumentOutOfRangeException(nameof(Body), value, "Body must have a radius and a height > 0 m (default(MoverBody) has neither), or be null for off.");
+    }
+
+    /// <summary>
+    /// Vertical motion, swept (needs <see cref="Body"/>; ignored without one): the Z of the delta moves the body
+    /// too. A body whose feet stand on the ground at the start and whose delta has no Z walks as without this
+    /// effect (stepping up and down). Otherwise it is in the air: its horizontal move does not step down and
+    /// climbs at most <see cref="PhysicsConstants.AirStepUp"/>; rising, its top stops under the first ceiling,
+    /// lintel, upper floor or object's underside over its disc (<see cref="ResolveOutcome.Ceiling"/>, with that
+    /// surface's normal); falling, it lands on the first floor under it (terrain, a cell's or an object's floor)
+    /// at the point of contact, through floors of any thickness at any speed. Moves longer than
+    /// <see cref="SweepStepLength"/> are taken in equal sub-steps, each horizontal then vertical. The engine keeps
+    /// no state: the caller keeps its vertical speed, and zeroes it when the answer is on the ground (a landing)
+    /// or reports <see cref="ResolveOutcome.Ceiling"/> (a head hit).
+    /// </summary>
+    /// <value>False (the default): off, the delta's Z is ignored, as the spec does.</value>
+    public bool Vertical
+    {
+        get => (_motion & Motion.Vertical) != 0;
+        init => _motion = value ? _motion | Motion.Vertical : _motion & ~Motion.Vertical;
+    }
+
+    /// <summary>
+    /// Footing by the body (needs <see cref="Body"/>; ignored without one): the body stands on a floor (a cell's or
+    /// an object's) that lies under any part of its footprint within the game's support reach, half its radius past
+    /// the floor's edge (<see cref="PhysicsConstants.SupportReach"/>; 0.24 m for the player), not only on the ground
+    /// under its centre: it stays on a plinth whose edge its centre has passed by less than that, and climbs
+    /// the treads under its edge. Among floors within reach it stands on the highest that is no more than the step
+    /// above its feet (and, when it would step down, no more than the step down below them).
+    /// </summary>
+    /// <value>False (the default): off, the body stands on the point under its centre.</value>
+    public bool Footing
+    {
+        get => (_motion & Motion.Footing) != 0;
+        init => _motion = value ? _motion | Motion.Footing : _motion & ~Motion.Footing;
+    }
+
+    /// <summary>
+    /// Edge slide, the game's precipice slide for players (needs <see cref="Body"/>; ignored without one): a body that
+    /// stands on a floor at the start and whose move would leave it in the air over a drop deeper than
+    /// <see cref="StepDownHeight"/> slides along the floor's edge instead, keeping the part of its move along the
+    /// edge (<see cref="ResolveOutcome.Slid"/>, the edge's outward normal, horizontal); head on, or where sliding
+    /// finds no footing either, it stays where it is (<see cref="ResolveOutcome.Edge"/>). A delta with a Z
+    /// (<see cref="Vertical"/>: a jump or a fall) is not held at edges.
+    /// </summary>
+    /// <value>False (the default): off, a body walks off an edge and is airborne.</value>
+    public bool EdgeSlide
+    {
+        get => (_motion & Motion.EdgeSlide) != 0;
+        init => _motion = value ? _motion | Motion.EdgeSlide : _motion & ~Motion.EdgeSlide;
+    }
+
+    /// <summary>Whether any effect of the body in three dimensions is on (vertical motion, footing, edge slide) with a body.</summary>
+    internal bool InThreeD => _motion != 0 && _body.HasValue;
+
+    /// <summary>The effects of the body in three dimensions, one bit each.</summary>
+    [Flags]
+    private enum Motion : byte
+    {
+        Vertical = 1,
+        Footing = 2,
+        EdgeSlide = 4,
     }
 }

@@ -68,6 +68,9 @@ public sealed partial class ObjectSurface
     /// <summary>The walls and cylinders (landblock-local) the movers meet.</summary>
     internal CellWalls Walls { get; }
 
+    /// <summary>The walkable triangles, landblock-local, as the floor queries sample them.</summary>
+    internal ReadOnlySpan<FloorTriangle> Floors => _floors;
+
     /// <summary>XY bounds of the floors, grown by the edge tolerance; empty when there are none.</summary>
     internal Vector2 FloorMin { get; }
 

@@ -198,4 +198,17 @@ public static class PhysicsConstants
 
     /// <summary>The side of a square of a cell's open floor (<see cref="OpenFloor"/>), metres.</summary>
     internal const float OpenFloorSquare = 1f;
+
+    /// <summary>
+    /// Body in the air (<see cref="MovementOptions.Vertical"/>): the most its horizontal move climbs, metres (0.04 m, the
+    /// game's step up while not on walkable ground), whatever the caller's step; higher edges are walls to it.
+    /// </summary>
+    public const float AirStepUp = 0.04f;
+
+    /// <summary>
+    /// Footing (<see cref="MovementOptions.Footing"/>): how far past a floor's edge, as a fraction of the body's radius,
+    /// its centre may be and the floor still hold it: 0.5, the game's (a 0.48 m body centred 0.239 m past an edge is
+    /// held, 0.241 m is not).
+    /// </summary>
+    public const float SupportReach = 0.5f;
 }

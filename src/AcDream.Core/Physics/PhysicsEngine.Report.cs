@@ -31,27 +31,36 @@ public sealed partial class PhysicsEngine
         var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
         SurfaceContact wall = default;
         query.Met = ref wall;
-        ResolveResult result = Move(ref query, in options);
-        report = Report(ref lands, in result, wall);
+        ResolveResult result = Move(ref query, in options, delta.Z);
+        report = Report(ref lands, in result, wall, in options);
         return result;
     }
 
     /// <summary>
     /// What the move that answered <paramref name="result"/> met: the ground the answer stands on (the one ground
     /// probe, at the answer's feet: what standing there gives again), and <paramref name="wall"/> as the move recorded
-    /// it when its outcome is a wall's (with the answer's normal).
+    /// it when its outcome is a wall's, an edge's or a ceiling's (with the answer's normal); with footing, the floor under the
+    /// body's footprint that holds it where the ground under its centre does not.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
-    private MoveReport Report(ref Neighbourhood lands, in ResolveResult result, SurfaceContact wall)
+    private MoveReport Report(ref Neighbourhood lands, in ResolveResult result, SurfaceContact wall, in MovementOptions options)
     {
-        bool walled = result.Outcome is ResolveOutcome.Wall or ResolveOutcome.OuterWall
+        bool walled = result.Outcome is ResolveOutcome.Wall or ResolveOutcome.OuterWall or ResolveOutcome.Edge or ResolveOutcome.Ceiling
             || (result.Outcome == ResolveOutcome.Slid && result.SurfaceNormal.Z == 0f);
         SurfaceContact met = walled && wall.Kind != SurfaceKind.None ? wall with { Normal = result.SurfaceNormal } : default;
         SurfaceContact floor = default;
         if (result.IsOnGround && result.Outcome != ResolveOutcome.Held
             && Locator.TryFind(_frame, ref lands, result.Position, result.CellId, out Place place))
         {
-            Ground.TryUnder(ref lands, in place, result.Position.Z, PhysicsConstants.GroundTolerance, out _, out floor);
+            Ground.TryUnder(ref lands, in place, result.Position.Z, PhysicsConstants.GroundTolerance, out float z, out floor);
+            if (z != result.Position.Z && options.InThreeD && options.Footing)
+            {
+                // Held by a floor under its footprint, not the ground under its centre.
+                const float tolerance = PhysicsConstants.GroundTolerance;
+                float reach = options.Body!.Value.Radius * PhysicsConstants.SupportReach;
+                Support support = Supports.Highest(ref lands, in place, -1, place.Local, reach, result.Position.Z - tolerance, result.Position.Z + tolerance);
+                floor = support.Found ? support.Floor : floor;
+            }
         }
 
         return new MoveReport(floor, met);

@@ -42,7 +42,7 @@ public sealed partial class PhysicsEngine
     private readonly WorldFrame _frame;
     private readonly PointMover _point;
     private readonly BodyPlanner _planner;
-    private readonly BodyResolver _body;
+    private readonly BodyMotion _motion;
 
     /// <summary>An engine whose world frame is global: world = landblock X·192 + landblock-local metres.</summary>
     public PhysicsEngine()
@@ -67,7 +67,7 @@ public sealed partial class PhysicsEngine
         var portals = new PortalTraversal();
         _point = new PointMover(new OutdoorResolver(frame, portals), new IndoorResolver(frame, portals));
         _planner = new BodyPlanner(frame);
-        _body = new BodyResolver(_planner, frame, _point);
+        _motion = new BodyMotion(frame, _point, new BodyResolver(_planner, frame, _point), _planner);
     }
 
     /// <summary>Number of registered landblocks.</summary>
@@ -198,24 +198,16 @@ public sealed partial class PhysicsEngine
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var lands = new Neighbourhood(_registry);
         var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
-        return Move(ref query, in options);
+        return Move(ref query, in options, delta.Z);
     }
 
-    /// <summary>The move of a checked call: a body's among the walls near it, else the point's (<see cref="PointMover"/>).</summary>
+    /// <summary>
+    /// The move of a checked call: a body's in three dimensions when an effect asks (<see cref="BodyMotion"/>, with the
+    /// delta's Z <paramref name="dz"/>), else across the ground (<see cref="BodyMotion.Horizontal"/>).
+    /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private ResolveResult Move(ref MoveQuery query, in MovementOptions options)
-    {
-        if (options.Body is MoverBody body && (query.Delta == Vector2.Zero || !_planner.IsOpenGround(ref query, query.Delta, body)))
-        {
-            return _body.Resolve(ref query, contourLeft: true);
-        }
-
-        // No body, or a body on open ground (no wall in its reach): the point move is the answer.
-        ResolveResult result = _point.Move(ref query);
-        return result.Outcome == ResolveOutcome.SlopeTooSteep && options.Body.HasValue && options.WalkableSlope
-            ? _body.AlongContour(ref query, result)
-            : result;
-    }
+    private ResolveResult Move(ref MoveQuery query, in MovementOptions options, float dz) =>
+        options.InThreeD ? _motion.Resolve(ref query, dz) : _motion.Horizontal(ref query);
 
     /// <summary>Tests' seam: whether a body's move needs no plan (<see cref="BodyPlanner.IsOpenGround"/>), as <c>Resolve</c> asks it.</summary>
     internal bool IsOpenGround(Vector3 position, uint cellId, Vector2 move, MoverBody body)
@@ -231,7 +223,7 @@ public sealed partial class PhysicsEngine
     {
         var lands = new Neighbourhood(_registry);
         var query = new MoveQuery(ref lands, position, cellId, move, stepUpHeight, in options);
-        return _body.Resolve(ref query, contourLeft: true);
+        return _motion.Planned(ref query);
     }
 
     /// <summary>Tests' seam: how far a body overlaps the walls of its band beyond its sink (<see cref="BodyPlanner.Overlap"/>), metres.</summary>

@@ -29,4 +29,14 @@ public enum ResolveOutcome : byte
 
     /// <summary>Refused: the move would leave the world.</summary>
     EdgeOfWorld,
+
+    /// <summary>Refused (edge slide): the move would step off a drop deeper than the step down, and sliding along the edge found no footing either (head on).</summary>
+    Edge,
+
+    /// <summary>
+    /// With vertical motion: the rising body's top met a ceiling, a lintel, an upper floor or an object's underside
+    /// and stopped under it (the surface's unit normal, facing down, is reported): moved; the caller zeroes its
+    /// upward speed.
+    /// </summary>
+    Ceiling,
 }

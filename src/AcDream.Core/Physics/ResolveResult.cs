@@ -58,6 +58,6 @@ public readonly record struct ResolveResult(
     /// </summary>
     public Vector3 SurfaceNormal { get; init; }
 
-    /// <summary>Whether the move was refused (the mover kept its XY): an outcome other than moved or held.</summary>
-    public bool IsRefused => Outcome > ResolveOutcome.Held;
+    /// <summary>Whether the move was refused (the mover kept its XY): an outcome other than moved, slid, held or <see cref="ResolveOutcome.Ceiling"/>.</summary>
+    public bool IsRefused => Outcome > ResolveOutcome.Held && Outcome < ResolveOutcome.Ceiling;
 }

@@ -1,3 +1,4 @@
+using AcDream.Testing;
 using System.Numerics;
 using AcDream.App.Fixtures;
 using AcDream.Core.Dat;
@@ -91,10 +92,12 @@ public class ObjectRestInvariantTests(ITestOutputHelper output)
         var random = new Random(seed);
         PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(0x0101FFFFu);
         var targets = new List<(uint Landblock, Vector3 Local)>();
+        var objectsOf = new Dictionary<uint, List<ObjectSurface>>();
         foreach (uint landblock in Landblocks)
         {
             var terrain = new TerrainSurface(Heights(landblock), Table, landblock);
             List<ObjectSurface> objects = Objects(random, terrain);
+            objectsOf[landblock >> 16] = objects;
             engine.AddLandblock(landblock, terrain, [], objects);
             targets.AddRange(objects.Select(o => (landblock, (o.BoundsMin + o.BoundsMax) / 2f)));
         }
@@ -126,21 +129,32 @@ public class ObjectRestInvariantTests(ITestOutputHelper output)
                 refused += r.IsRefused ? 1 : 0;
 
                 bool found = engine.TryGetGround(r.Position, r.CellId, 0.6f, out float ground, out _, out uint objectId);
-                bool stands = found && MathF.Abs(r.Position.Z - ground) <= PhysicsConstants.GroundTolerance;
                 if (r.Outcome == ResolveOutcome.Held)
                 {
                     break; // walked off the four landblocks: held at their edge, on ground it does not know
                 }
+
+                bool onPoint = found && MathF.Abs(r.Position.Z - ground) <= PhysicsConstants.GroundTolerance;
+                Vector3 lbOrigin = engine.GetLandblockOrigin(r.CellId);
+                bool held = !onPoint && FootingReference.HoldsAnswer(options, [], objectsOf[r.CellId >> 16], r, new Vector2(r.Position.X - lbOrigin.X, r.Position.Y - lbOrigin.Y));
+                bool stands = onPoint || held;
+                objectId = held ? uint.MaxValue : objectId; // held by an object's floor under its footprint: any object's
 
                 r.IsOnGround.Should().Be(stands, $"honest ground: {what} → {r}; ground {(found ? ground.ToString("R") : "none")} (object 0x{objectId:X8})");
 
                 // What the move met: the same answer, the floor it stands on, and every wall stop named.
                 ResolveResult reported = engine.Resolve(at.Position, at.CellId, delta, 0.6f, options, out MoveReport report);
                 reported.Should().Be(r, $"the answer with the report: {what}");
-                report.Floor.Kind.Should().Be(!r.IsOnGround ? SurfaceKind.None : objectId != 0 ? SurfaceKind.ObjectFloor : SurfaceKind.Terrain, $"floor: {what} → {r}; {report}");
-                report.Floor.Id.Should().Be(!r.IsOnGround ? 0u : objectId != 0 ? objectId : r.CellId, $"floor id: {what} → {r}; {report}");
-                bool walled = r.Outcome is ResolveOutcome.Wall or ResolveOutcome.OuterWall || (r.Outcome == ResolveOutcome.Slid && r.SurfaceNormal.Z == 0f);
-                report.Wall.Kind.Should().BeOneOf(walled ? [SurfaceKind.ObjectWall, SurfaceKind.BuildingShell, SurfaceKind.Cylinder] : [SurfaceKind.None], $"wall: {what} → {r}; {report}");
+                report.Floor.Kind.Should().BeOneOf(
+                    !r.IsOnGround ? [SurfaceKind.None] : objectId == uint.MaxValue ? [SurfaceKind.ObjectFloor, SurfaceKind.Terrain] : objectId != 0 ? [SurfaceKind.ObjectFloor] : [SurfaceKind.Terrain],
+                    $"floor (held by footing: an object's floor under its footprint, or the terrain where that lies at the same height): {what} → {r}; {report}");
+                if (objectId != uint.MaxValue)
+                {
+                    report.Floor.Id.Should().Be(!r.IsOnGround ? 0u : objectId != 0 ? objectId : r.CellId, $"floor id: {what} → {r}; {report}");
+                }
+
+                bool walled = r.Outcome is ResolveOutcome.Wall or ResolveOutcome.OuterWall or ResolveOutcome.Edge || (r.Outcome == ResolveOutcome.Slid && r.SurfaceNormal.Z == 0f);
+                report.Wall.Kind.Should().BeOneOf(walled ? [SurfaceKind.ObjectWall, SurfaceKind.BuildingShell, SurfaceKind.Cylinder, SurfaceKind.FloorEdge] : [SurfaceKind.None], $"wall: {what} → {r}; {report}");
                 report.Wall.Normal.Should().Be(walled ? r.SurfaceNormal : Vector3.Zero, $"wall normal: {what} → {r}; {report}");
                 walls += walled ? 1 : 0;
                 onObjects += stands && objectId != 0 ? 1 : 0;

@@ -164,6 +164,40 @@ internal sealed class BodyPlanner(WorldFrame frame)
     }
 
     /// <summary>
+    /// How far a body of <paramref name="body"/> with its feet at <paramref name="position"/> (world; in
+    /// <paramref name="cellId"/>) rises of <paramref name="dz"/> (&gt; 0) before its top meets the lowest surface over its
+    /// disc (<see cref="Overhead"/>): a ceiling, a lintel, an upper floor, an object's underside, among the cells and
+    /// objects around it (<see cref="WallSet"/>). Stopped, it keeps a gap of the body's skin under the surface, and
+    /// <paramref name="normal"/> is the surface's (facing down); else zero. The whole rise when its landblock is not loaded.
+    /// </summary>
+    [SkipLocalsInit] // the stack buffer is written before it is read
+    public float Rise(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, float dz, out Vector3 normal)
+    {
+        normal = default;
+        if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place))
+        {
+            return dz;
+        }
+
+        float top = position.Z + body.Height;
+        var rise = new BodyRise(place.Local, body.Radius, top);
+        var hit = new CeilingHit { Z = top + dz };
+        Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
+        var reach = new Vector2(body.Radius + PhysicsConstants.ContactTolerance);
+        new WallSet(ref q.Lands, place.Entry, place.CellIndex, sources, new WallBox(place.Local - reach, place.Local + reach, top - PhysicsConstants.ContactTolerance, top + dz))
+            .Rise(in rise, ref hit);
+        if (hit.Source.Kind == SurfaceKind.None)
+        {
+            return dz;
+        }
+
+        q.Meet(hit.Source.Kind, hit.Source.Id);
+        normal = hit.Normal;
+        float skin = PhysicsConstants.BodySkin + (2f * Geometry.Spacing(MathF.Abs(hit.Z) + body.Height));
+        return Math.Clamp(hit.Z - skin - top, 0f, dz);
+    }
+
+    /// <summary>
     /// The gap the body keeps from walls beyond its radius: <see cref="PhysicsConstants.BodySkin"/>
     /// plus twice the float spacing of the coordinates it may reach, in the world frame and the
     /// landblock's, so rounding the answer to the world frame never puts the body into a wall.

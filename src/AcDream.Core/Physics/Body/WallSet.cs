@@ -102,6 +102,64 @@ internal ref struct WallSet
     }
 
     /// <summary>
+    /// Lowers <paramref name="hit"/> to the lowest surface over the disc of <paramref name="rise"/> above its top: every
+    /// wall polygon, cylinder and floor (seen from below) of the listed cells and objects (<see cref="Overhead"/>).
+    /// </summary>
+    public readonly void Rise(in BodyRise rise, ref CeilingHit hit)
+    {
+        var riser = new Riser(ref _lands, _entry, in rise, ref hit);
+        if (_count < 0)
+        {
+            var r = new Vector2(rise.Radius);
+            Collect(ref _lands, _entry, _cell, new WallBox(rise.Centre - r, rise.Centre + r, rise.Top, hit.Z), ref riser);
+            return;
+        }
+
+        for (int i = 0; i < _count; i++)
+        {
+            riser.Add(_listed[i]);
+        }
+
+        if (_cell < 0)
+        {
+            // Outdoors, objects with floors and no wall there (a slab) were not listed: their undersides.
+            var r = new Vector2(rise.Radius);
+            Vector2 lo = rise.Centre - r, hi = rise.Centre + r;
+            FloorsOnly(_entry, Vector2.Zero, lo, hi, in rise, ref hit);
+            if (_lands.ReachInto(_entry).Meets(lo, hi))
+            {
+                SeamNeighbours across = Neighbourhood.Across(ref _lands, _entry, lo, hi);
+                while (across.MoveNext())
+                {
+                    FloorsOnly(across.Current, across.Offset, lo, hi, in rise, ref hit);
+                }
+            }
+        }
+    }
+
+    /// <summary>The floors (seen from below) of <paramref name="entry"/>'s outdoor objects over the box whose walls do not reach it (those were listed with their walls).</summary>
+    private static void FloorsOnly(LandblockEntry entry, Vector2 offset, Vector2 lo, Vector2 hi, in BodyRise rise, ref CeilingHit hit)
+    {
+        if (entry.OutdoorObjects.Length == 0)
+        {
+            return;
+        }
+
+        (lo, hi) = (lo - offset, hi - offset);
+        for (BoxGrid.Cursor near = entry.Objects.Near(lo, hi); near.MoveNext();)
+        {
+            ref readonly ObjectBox b = ref entry.ObjectBoxes[near.Current];
+            bool walls = b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y;
+            if (!walls && b.FloorMin.X <= hi.X && b.FloorMax.X >= lo.X && b.FloorMin.Y <= hi.Y && b.FloorMax.Y >= lo.Y && b.ZMax > rise.Top)
+            {
+                ObjectSurface o = entry.OutdoorObjects[near.Current];
+                hit.Current = WallSource.Of(o);
+                Overhead.Floors(o.Floors, offset, in rise, ref hit);
+            }
+        }
+    }
+
+    /// <summary>
     /// Outdoors: whether any cell's or object's walls around a mover in <paramref name="entry"/> meet the box
     /// <paramref name="lo"/>–<paramref name="hi"/> (seen from above, at any height), in its landblock or across a
     /// seam: false is certain.
@@ -258,6 +316,44 @@ internal ref struct WallSet
             }
 
             return true;
+        }
+    }
+
+    /// <summary>Reads each source's surfaces overhead for a rising body (a cell's walls and floors with its objects', or an outdoor object's).</summary>
+    private ref struct Riser(ref Neighbourhood lands, LandblockEntry entry, in BodyRise rise, ref CeilingHit hit) : ISourceSink
+    {
+        private readonly ref Neighbourhood _lands = ref lands;
+        private readonly ref readonly BodyRise _rise = ref rise;
+        private readonly ref CeilingHit _hit = ref hit;
+
+        public bool Add(int source)
+        {
+            int slot = source >> SlotShift, index = source & (ObjectBit - 1);
+            LandblockEntry of = slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
+            Vector2 offset = Offset(slot);
+            if ((source & ObjectBit) != 0)
+            {
+                Read(of.OutdoorObjects[index], offset);
+                return true;
+            }
+
+            CellSurface cell = of.Cells[index];
+            _hit.Current = new WallSource(SurfaceKind.CellWall, cell.CellId);
+            Overhead.Walls(cell.Walls, offset, in _rise, ref _hit);
+            Overhead.Floors(cell.Floors, offset, in _rise, ref _hit);
+            foreach (ObjectSurface o in cell.Objects)
+            {
+                Read(o, offset);
+            }
+
+            return true;
+        }
+
+        private readonly void Read(ObjectSurface o, Vector2 offset)
+        {
+            _hit.Current = WallSource.Of(o);
+            Overhead.Walls(o.Walls, offset, in _rise, ref _hit);
+            Overhead.Floors(o.Floors, offset, in _rise, ref _hit);
         }
     }
 }

@@ -91,6 +91,14 @@ internal ref struct MoveQuery
     /// <summary>The feet's Z, metres.</summary>
     public readonly float Z => Position.Z;
 
+    /// <summary>A new move of the same call (its landblocks and what it met) with its own step and effects: a body's move through the air, or its fall.</summary>
+    public readonly MoveQuery With(Vector3 position, uint cellId, Vector2 delta, float stepUp, ref readonly MovementOptions options)
+    {
+        var next = new MoveQuery(ref Lands, position, cellId, delta, stepUp, in options);
+        next.Met = ref Met;
+        return next;
+    }
+
     /// <summary>A new move of the same call (its landblocks, step and effects) from <paramref name="position"/> in <paramref name="cellId"/> by <paramref name="delta"/>.</summary>
     public readonly MoveQuery Next(Vector3 position, uint cellId, Vector2 delta)
     {

@@ -106,6 +106,44 @@ internal readonly struct FloorTriangle
         return true;
     }
 
+    /// <summary>
+    /// The point of the triangle (seen from above, edges included) nearest <paramref name="p"/>: <paramref name="p"/>
+    /// itself when it is over the triangle (within <see cref="PhysicsConstants.EdgeTolerance"/>), else the nearest point of
+    /// its nearest edge. Landblock-local metres.
+    /// </summary>
+    public Vector2 Nearest(Vector2 p)
+    {
+        float dA = Cross(C - B, p - B) * InvLenBc;
+        float dB = Cross(A - C, p - C) * InvLenCa;
+        float dC = Cross(B - A, p - A) * InvLenAb;
+        const float tol = -PhysicsConstants.EdgeTolerance;
+        if (dA >= tol && dB >= tol && dC >= tol)
+        {
+            return p;
+        }
+
+        Vector2 best = OnSegment(A, B, p), candidate = OnSegment(B, C, p);
+        best = Vector2.DistanceSquared(candidate, p) < Vector2.DistanceSquared(best, p) ? candidate : best;
+        candidate = OnSegment(C, A, p);
+        return Vector2.DistanceSquared(candidate, p) < Vector2.DistanceSquared(best, p) ? candidate : best;
+    }
+
+    /// <summary>
+    /// The triangle's Z for a body centred at <paramref name="centre"/> that it holds (footing): its plane under the centre, no
+    /// higher than its highest vertex. The plane is not clamped from below: the triangles of one slope, or of a run of sloped
+    /// pieces in one plane, give the same Z as the one under the centre, so footing lifts the body only onto what is higher.
+    /// </summary>
+    public float UnderCentre(Vector2 centre) => MathF.Min(PlaneZ + Vector2.Dot(Gradient, centre - PlanePoint), ZMax);
+
+    /// <summary>The point of segment a–b nearest <paramref name="p"/>.</summary>
+    private static Vector2 OnSegment(Vector2 a, Vector2 b, Vector2 p)
+    {
+        Vector2 ab = b - a;
+        float length = Vector2.Dot(ab, ab);
+        float t = length > 0f ? Math.Clamp(Vector2.Dot(p - a, ab) / length, 0f, 1f) : 0f;
+        return new Vector2(a.X + (ab.X * t), a.Y + (ab.Y * t));
+    }
+
     /// <summary>The Z of the triangle's plane at (x, y), anywhere (not clamped, not only over the triangle).</summary>
     public float PlaneAt(Vector2 p) => PlaneZ + Vector2.Dot(Gradient, p - PlanePoint);
 

@@ -58,6 +58,22 @@ internal static class Geometry
         return inside;
     }
 
+    /// <summary>Whether <paramref name="p"/> is inside polygon <paramref name="v"/> seen from above (even-odd rule, any winding; an edge's points count or not as rounding falls).</summary>
+    public static bool InsidePolygonXY(ReadOnlySpan<Vector3> v, Vector2 p)
+    {
+        bool inside = false;
+        for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
+        {
+            Vector3 a = v[j], b = v[i];
+            if ((b.Y > p.Y) != (a.Y > p.Y) && p.X < a.X + ((p.Y - a.Y) * (b.X - a.X) / (b.Y - a.Y)))
+            {
+                inside = !inside;
+            }
+        }
+
+        return inside;
+    }
+
     /// <summary>Squared distance from <paramref name="p"/> to the segment a–b (a point when a = b).</summary>
     public static float DistanceSquaredToSegment(Vector2 p, Vector2 a, Vector2 b)
     {

@@ -1,0 +1,281 @@
+using System.Numerics;
+using System.Runtime.CompilerServices;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// A body's move in three dimensions (<see cref="MovementOptions.Vertical"/>, <see cref="MovementOptions.Footing"/>,
+/// <see cref="MovementOptions.EdgeSlide"/>) on top of its move across the ground (<see cref="Horizontal"/>): through the
+/// air, with its rise stopped under ceilings and its fall landed on the first floor; standing on floors under its
+/// footprint; held at edges.
+/// </summary>
+internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolver body, BodyPlanner planner)
+{
+    /// <summary>Edge slide: how far inside the last point the floor holds it a body held at an edge stops, metres (1 mm, plus the world frame's rounding).</summary>
+    private const float EdgeMargin = 0.001f;
+
+    /// <summary>
+    /// The move across the ground of a checked call: a body's among the walls near it, else the point's
+    /// (<see cref="PointMover"/>); with walkable slope, a body refused by a slope slides along its contour.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public ResolveResult Horizontal(ref MoveQuery query)
+    {
+        if (query.Options.Body is MoverBody b && (query.Delta == Vector2.Zero || !planner.IsOpenGround(ref query, query.Delta, b)))
+        {
+            return body.Resolve(ref query, contourLeft: true);
+        }
+
+        // No body, or a body on open ground (no wall in its reach): the point move is the answer.
+        ResolveResult result = point.Move(ref query);
+        return result.Outcome == ResolveOutcome.SlopeTooSteep && query.Options.Body.HasValue && query.Options.WalkableSlope
+            ? body.AlongContour(ref query, result)
+            : result;
+    }
+
+    /// <summary>Tests' seam: a body's move always planned (<see cref="BodyResolver.Resolve"/>), never the open-ground shortcut.</summary>
+    public ResolveResult Planned(ref MoveQuery query) => body.Resolve(ref query, contourLeft: true);
+
+    /// <summary>
+    /// The move <paramref name="q"/> of a body with an effect in three dimensions, <paramref name="dz"/> metres up (the
+    /// delta's Z): through the air when it has vertical motion and rises, falls or does not stand at the start; else
+    /// across the ground (<see cref="Walk"/>), held at an edge it would step off.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a call without these effects pays nothing for it
+    public ResolveResult Resolve(ref MoveQuery q, float dz)
+    {
+        bool vertical = q.Options.Vertical;
+        if (vertical && (dz != 0f || !Stands(ref q)))
+        {
+            return Air(ref q, dz);
+        }
+
+        ResolveResult result = Walk(ref q);
+        return q.Options.EdgeSlide && !result.IsOnGround && result.Outcome is ResolveOutcome.Moved or ResolveOutcome.Slid
+            && q.Delta != Vector2.Zero && (vertical || Stands(ref q))
+            ? AlongEdge(ref q, result)
+            : result;
+    }
+
+    /// <summary>A move across the ground, standing where the body's footprint finds footing (<see cref="Foot"/>).</summary>
+    private ResolveResult Walk(ref MoveQuery q) => Foot(ref q, Horizontal(ref q));
+
+    /// <summary>
+    /// A move through the air: in equal sub-steps no longer than the sweep (when the options sweep), each across
+    /// (not stepping down, climbing at most <see cref="PhysicsConstants.AirStepUp"/>) then up or down. A rise stops
+    /// under the first surface over the body (<see cref="ResolveOutcome.Ceiling"/>); a fall lands on the first floor
+    /// under it, and the rest of the move is walked on the ground.
+    /// </summary>
+    [SkipLocalsInit]
+    private ResolveResult Air(ref MoveQuery q, float dz)
+    {
+        MovementOptions air = q.Options with { StepDownHeight = 0f };
+        float step = MathF.Min(q.StepUp, PhysicsConstants.AirStepUp);
+        float length = MathF.Sqrt(q.Delta.LengthSquared() + (dz * dz));
+        int steps = q.Options.SweepStepLength is float sweep && length > sweep
+            ? (int)Math.Min(Math.Ceiling(length / (double)sweep), PhysicsConstants.MaxSweepSteps)
+            : 1;
+        Vector2 across = q.Delta / steps;
+        float up = dz / steps;
+        var at = new ResolveResult(q.Position, q.CellId, false);
+        (ResolveOutcome outcome, Vector3 normal) = (ResolveOutcome.Moved, default);
+        bool landed = false;
+        for (int k = 0; k < steps; k++)
+        {
+            MoveQuery move = landed
+                ? q.With(at.Position, at.CellId, across, q.StepUp, in q.Options)
+                : q.With(at.Position, at.CellId, across, step, in air);
+            ResolveResult moved = Walk(ref move);
+            if (moved.IsRefused || moved.Outcome == ResolveOutcome.Slid)
+            {
+                (outcome, normal) = outcome == ResolveOutcome.Ceiling ? (outcome, normal) : (moved.Outcome, moved.SurfaceNormal);
+            }
+
+            at = moved;
+            if (landed || (at.IsOnGround && up <= 0f))
+            {
+                landed = true;
+                continue;
+            }
+
+            if (up > 0f)
+            {
+                float rise = planner.Rise(ref move, at.Position, at.CellId, q.Options.Body!.Value, up, out Vector3 ceiling);
+                at = Settle(ref move, at.Position with { Z = at.Position.Z + rise }, at.CellId, in air);
+                if (rise < up)
+                {
+                    (outcome, normal, up) = (ResolveOutcome.Ceiling, ceiling, 0f);
+                }
+            }
+            else if (up < 0f)
+            {
+                at = Fall(ref move, at, -up, in air);
+                landed = at.IsOnGround;
+            }
+        }
+
+        if (at.IsOnGround && at.Outcome != ResolveOutcome.Held)
+        {
+            // On the ground: at rest as a body standing there walks (its step, its footing), so that standing still there gives it again.
+            MoveQuery rest = q.With(at.Position, at.CellId, Vector2.Zero, q.StepUp, in q.Options);
+            at = Walk(ref rest);
+        }
+
+        return at with { Outcome = outcome, SurfaceNormal = normal };
+    }
+
+    /// <summary>
+    /// A fall of <paramref name="depth"/> metres from <paramref name="at"/>: onto the first ground under the body within it
+    /// (the point's ground, as a step down of that depth finds it, or a floor under its footprint), at the point of
+    /// contact; else the body is in the air that much lower.
+    /// </summary>
+    private ResolveResult Fall(ref MoveQuery q, ResolveResult at, float depth, in MovementOptions air)
+    {
+        MovementOptions drop = q.Options with { StepDownHeight = depth };
+        MoveQuery down = q.With(at.Position, at.CellId, Vector2.Zero, q.StepUp, in drop);
+        ResolveResult landed = Walk(ref down);
+        return landed.IsOnGround
+            ? landed
+            : Settle(ref q, at.Position with { Z = at.Position.Z - depth }, landed.CellId, in air);
+    }
+
+    /// <summary>The body at rest at <paramref name="position"/> in the air: not moving, not stepping down, its cell and footing found there.</summary>
+    private ResolveResult Settle(ref MoveQuery q, Vector3 position, uint cellId, in MovementOptions air)
+    {
+        MoveQuery still = q.With(position, cellId, Vector2.Zero, q.StepUp, in air);
+        return Walk(ref still);
+    }
+
+    /// <summary>
+    /// Footing (<see cref="MovementOptions.Footing"/>): the answer <paramref name="result"/> of <paramref name="q"/> raised onto
+    /// the highest floor under the body's footprint (within the support reach) that is higher than where it stands and no
+    /// more than the step above the start's feet, or, when it is in the air, no more than its step down below it; and on
+    /// from there to rest, as the point's ground is (a step from the floor it climbed), at most
+    /// <see cref="PhysicsConstants.MaxClimbHalvings"/> times.
+    /// </summary>
+    private ResolveResult Foot(ref MoveQuery q, ResolveResult result)
+    {
+        if (!q.Options.Footing || result.Outcome == ResolveOutcome.Held)
+        {
+            return result;
+        }
+
+        float reach = q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach;
+        float feet = q.Z;
+        for (int i = 0; i < PhysicsConstants.MaxClimbHalvings; i++)
+        {
+            if (!Locator.TryFind(frame, ref q.Lands, result.Position, result.CellId, out Place place))
+            {
+                return result;
+            }
+
+            float z = result.Position.Z;
+            float low = result.IsOnGround ? z + PhysicsConstants.GroundTolerance : z - (q.Options.StepDownHeight ?? 0f) - PhysicsConstants.GroundTolerance;
+            int start = CellIds.IsIndoor(q.CellId) && CellIds.IsIndoor(result.CellId) && (q.CellId >> 16) == (result.CellId >> 16)
+                && place.Entry.TryGetCellIndex(q.CellId, out int index) ? index : -1;
+            // In the air, the floors of the other cells of its building too: a body over the edge of an opening or a doorway's
+            // threshold is held by the floor beyond it, whichever cell its centre was found in.
+            Support support = Supports.Highest(ref q.Lands, in place, start, place.Local, reach, low, MathF.Max(feet, z) + q.StepUp, !result.IsOnGround);
+            if (!support.Found || (result.IsOnGround && !(support.Z > z)))
+            {
+                return result;
+            }
+
+            uint cellId = support.CellIndex >= 0 ? place.Entry.Cells[support.CellIndex].CellId : result.CellId;
+            result = result with { Position = result.Position with { Z = support.Z }, CellId = cellId, IsOnGround = true };
+
+            // At rest from there: the ground under the centre for feet at that height may be higher still.
+            MoveQuery still = q.With(result.Position, result.CellId, Vector2.Zero, q.StepUp, in q.Options);
+            ResolveResult settled = Horizontal(ref still);
+            if (!(settled.IsOnGround && settled.Position.Z > support.Z))
+            {
+                return result;
+            }
+
+            (result, feet) = (settled with { Outcome = result.Outcome, SurfaceNormal = result.SurfaceNormal }, support.Z);
+        }
+
+        return result;
+    }
+
+    /// <summary>
+    /// Whether the body of <paramref name="q"/> stands at its start: its feet within the ground tolerance of the ground under
+    /// its centre, or (footing) of a floor under its footprint; else, as the move itself finds the ground there (through
+    /// its cell's portals), a body not moving and not stepping down is on the ground at its feet. A body whose
+    /// landblock is not loaded is held: it stands.
+    /// </summary>
+    private bool Stands(ref MoveQuery q)
+    {
+        if (!Locator.TryFind(frame, ref q.Lands, q.Position, q.CellId, out Place place))
+        {
+            return true;
+        }
+
+        const float tolerance = PhysicsConstants.GroundTolerance;
+        if (Ground.TryUnder(ref q.Lands, in place, q.Z, tolerance, out float z, out _) && MathF.Abs(z - q.Z) <= tolerance)
+        {
+            return true;
+        }
+
+        if (q.Options.Footing
+            && Supports.Highest(ref q.Lands, in place, -1, place.Local, q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach, q.Z - tolerance, q.Z + tolerance).Found)
+        {
+            return true;
+        }
+
+        MovementOptions still = q.Options with { StepDownHeight = 0f };
+        MoveQuery stay = q.With(q.Position, q.CellId, Vector2.Zero, q.StepUp, in still);
+        ResolveResult there = Walk(ref stay);
+        return there.IsOnGround && MathF.Abs(there.Position.Z - q.Z) <= tolerance;
+    }
+
+    /// <summary>
+    /// Edge slide: a body that stood at the start of <paramref name="q"/> and whose move <paramref name="off"/> left it in
+    /// the air over a drop moves out to the edge of the floor it stood on (as far as the floor holds it) and on along the
+    /// edge with the rest of its move (the edge's outward normal reported), or stays where it is
+    /// (<see cref="ResolveOutcome.Edge"/>) when that gives no footing either.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // rare: only a move off an edge
+    private ResolveResult AlongEdge(ref MoveQuery q, ResolveResult off)
+    {
+        if (!Locator.TryFind(frame, ref q.Lands, q.Position, q.CellId, out Place place)
+            || !Locator.TryFind(frame, ref q.Lands, off.Position, off.CellId, out Place end)
+            || !Ground.TryUnder(ref q.Lands, in end, off.Position.Z, 0f, out _, out _))
+        {
+            return off; // no ground at all under it (a cell with no floor there): no drop to be held from
+        }
+
+        // The end in the start's frame: the start's local point plus the move's rounded displacement.
+        Vector2 to = place.Local + new Vector2(off.Position.X - q.Position.X, off.Position.Y - q.Position.Y);
+        float reach = q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach;
+        Vector2 outward = Supports.EdgeNormal(ref q.Lands, in place, -1, place.Local, to, reach, q.Z, out SurfaceContact edge, out Vector2 nearest);
+        q.Meet(SurfaceKind.FloorEdge, edge.Id);
+        if (outward != Vector2.Zero)
+        {
+            // Out to where the floor still holds the body (its edge, plus the support reach with footing), less a margin;
+            // the rest of the move along the edge.
+            // The margin covers the world frame's rounding of where it stops (4 mm at the far corner of the global frame).
+            float held = q.Options.Footing ? reach : 0f;
+            float margin = EdgeMargin + (4f * Geometry.Spacing(MathF.Max(MathF.Abs(off.Position.X), MathF.Abs(off.Position.Y))));
+            float past = Vector2.Dot(to - nearest, outward) - held + margin;
+            Vector2 along = q.Delta - (outward * MathF.Max(past, 0f));
+            if (along.LengthSquared() > PhysicsConstants.ContactTolerance * PhysicsConstants.ContactTolerance)
+            {
+                MoveQuery slide = q.Next(q.Position, q.CellId, along);
+                ResolveResult slid = Walk(ref slide);
+                if (slid.IsOnGround && !slid.IsRefused)
+                {
+                    return slid with { Outcome = ResolveOutcome.Slid, SurfaceNormal = new Vector3(outward, 0f) };
+                }
+            }
+        }
+        else if (to != place.Local)
+        {
+            outward = Vector2.Normalize(to - place.Local); // no floor's edge found (the terrain's ground): the move's own way
+        }
+
+        MoveQuery stay = q.Next(q.Position, q.CellId, Vector2.Zero);
+        ResolveResult still = Walk(ref stay);
+        return still with { Outcome = ResolveOutcome.Edge, SurfaceNormal = new Vector3(outward, 0f) };
+    }
+}

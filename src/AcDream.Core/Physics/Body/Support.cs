@@ -1,0 +1,204 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The floors under a body's footprint (<see cref="MovementOptions.Footing"/>): every cell's or object's floor triangle
+/// whose nearest point, seen from above, is within the support reach of the body's centre. Landblock-local metres;
+/// allocation-free. Terrain is not among them: it lies under every outdoor centre, and the point's ground has it.
+/// </summary>
+internal static class Supports
+{
+    /// <summary>
+    /// The highest floor within <paramref name="reach"/> of <paramref name="p"/> (landblock-local to <paramref name="place"/>)
+    /// whose Z under <paramref name="p"/> (<see cref="FloorTriangle.UnderCentre"/>) is between <paramref name="low"/> and <paramref name="high"/>: indoors, the
+    /// floors of the place's cell, of cell <paramref name="alsoCell"/> (the move's start, when another; −1: none) and, with
+    /// <paramref name="building"/>, of the other cells of its building, with their objects'; outdoors, the outdoor objects' floors and the buildings' cells' floors, across seams too.
+    /// </summary>
+    public static Support Highest(ref Neighbourhood lands, in Place place, int alsoCell, Vector2 p, float reach, float low, float high, bool building = false)
+    {
+        var scan = new HighestScan { Best = new Support { Z = float.NegativeInfinity, CellIndex = -1 }, P = p, Reach = reach, Low = low, High = high };
+        Visit(ref lands, in place, alsoCell, building, p - new Vector2(reach), p + new Vector2(reach), ref scan);
+        return scan.Best;
+    }
+
+    /// <summary>
+    /// The outward unit normal, seen from above, of the edge a body left: among the floors within <paramref name="reach"/> of
+    /// <paramref name="start"/> whose Z there is within the ground tolerance of <paramref name="level"/> (what it stood on),
+    /// the one nearest <paramref name="end"/>, from its nearest point to <paramref name="end"/>. Zero when none is, or
+    /// <paramref name="end"/> is over it. <paramref name="floor"/>: whose floor it is; <paramref name="nearest"/>: its point nearest <paramref name="end"/>.
+    /// </summary>
+    public static Vector2 EdgeNormal(ref Neighbourhood lands, in Place place, int alsoCell, Vector2 start, Vector2 end, float reach, float level, out SurfaceContact floor, out Vector2 nearest)
+    {
+        var scan = new EdgeScan { Start = start, End = end, Reach = reach, Level = level, Distance = float.PositiveInfinity };
+        Visit(ref lands, in place, alsoCell, false, Vector2.Min(start, end) - new Vector2(reach), Vector2.Max(start, end) + new Vector2(reach), ref scan);
+        Vector2 away = end - scan.Nearest;
+        (floor, nearest) = (scan.Floor, scan.Nearest);
+        return scan.Distance < float.PositiveInfinity && away != Vector2.Zero ? Vector2.Normalize(away) : Vector2.Zero;
+    }
+
+    /// <summary>Hands every floor whose bounds meet the box <paramref name="lo"/>–<paramref name="hi"/> to <paramref name="scan"/>, with the offset of its frame.</summary>
+    private static void Visit<T>(ref Neighbourhood lands, in Place place, int alsoCell, bool building, Vector2 lo, Vector2 hi, ref T scan)
+        where T : struct, IFloorScan
+    {
+        LandblockEntry entry = place.Entry;
+        if (place.CellIndex >= 0)
+        {
+            Cell(entry, place.CellIndex, ref scan);
+            if (alsoCell >= 0 && alsoCell != place.CellIndex)
+            {
+                Cell(entry, alsoCell, ref scan);
+            }
+
+            if (building)
+            {
+                // The other cells of its building whose floors reach the box: at a doorway or over an opening's edge the
+                // floor beyond holds the body too, whichever cell its centre was found in.
+                int group = entry.CellGroups[place.CellIndex];
+                for (int c = 0; c < entry.Cells.Length; c++)
+                {
+                    CellSurface other = entry.Cells[c];
+                    if (c != place.CellIndex && c != alsoCell && entry.CellGroups[c] == group
+                        && other.FloorMin.X <= hi.X && other.FloorMax.X >= lo.X && other.FloorMin.Y <= hi.Y && other.FloorMax.Y >= lo.Y)
+                    {
+                        Cell(entry, c, ref scan);
+                    }
+                }
+            }
+
+            return;
+        }
+
+        Outdoors(entry, lo, hi, Vector2.Zero, ref scan);
+        if (lands.ReachInto(entry).Meets(lo, hi))
+        {
+            SeamNeighbours across = Neighbourhood.Across(ref lands, entry, lo, hi);
+            while (across.MoveNext())
+            {
+                Outdoors(across.Current, lo - across.Offset, hi - across.Offset, across.Offset, ref scan);
+            }
+        }
+    }
+
+    private static void Cell<T>(LandblockEntry entry, int index, ref T scan)
+        where T : struct, IFloorScan
+    {
+        CellSurface cell = entry.Cells[index];
+        scan.Scan(cell.Floors, Vector2.Zero, SurfaceKind.CellFloor, cell.CellId, index);
+        foreach (ObjectSurface o in cell.Objects)
+        {
+            scan.Scan(o.Floors, Vector2.Zero, SurfaceKind.ObjectFloor, o.ObjectId, index);
+        }
+    }
+
+    private static void Outdoors<T>(LandblockEntry entry, Vector2 lo, Vector2 hi, Vector2 offset, ref T scan)
+        where T : struct, IFloorScan
+    {
+        if (entry.OutdoorCellWalls is BoxGrid cells)
+        {
+            // A building's cells' floors, where one reaches out past its doorway's plane (the threshold): they hold an
+            // outdoor body there, which stays outdoors (its centre decides its cell).
+            for (BoxGrid.Cursor near = cells.Near(lo, hi); near.MoveNext();)
+            {
+                CellSurface cell = entry.Cells[near.Current];
+                if (cell.FloorMin.X <= hi.X && cell.FloorMax.X >= lo.X && cell.FloorMin.Y <= hi.Y && cell.FloorMax.Y >= lo.Y)
+                {
+                    scan.Scan(cell.Floors, offset, SurfaceKind.CellFloor, cell.CellId, -1);
+                }
+            }
+        }
+
+        if (entry.OutdoorObjects.Length == 0)
+        {
+            return;
+        }
+
+        for (BoxGrid.Cursor near = entry.Objects.Near(lo, hi); near.MoveNext();)
+        {
+            ref readonly ObjectBox b = ref entry.ObjectBoxes[near.Current];
+            if (b.FloorMin.X <= hi.X && b.FloorMax.X >= lo.X && b.FloorMin.Y <= hi.Y && b.FloorMax.Y >= lo.Y)
+            {
+                ObjectSurface o = entry.OutdoorObjects[near.Current];
+                scan.Scan(o.Floors, offset, SurfaceKind.ObjectFloor, o.ObjectId, -1);
+            }
+        }
+    }
+
+    /// <summary>What is done with each floor near the body (its triangles in a frame <c>offset</c> from the body's).</summary>
+    private interface IFloorScan
+    {
+        void Scan(ReadOnlySpan<FloorTriangle> floors, Vector2 offset, SurfaceKind kind, uint id, int cellIndex);
+    }
+
+    /// <summary>Keeps the highest floor within reach between the two heights.</summary>
+    private struct HighestScan : IFloorScan
+    {
+        public Support Best;
+        public Vector2 P;
+        public float Reach;
+        public float Low;
+        public float High;
+
+        public void Scan(ReadOnlySpan<FloorTriangle> floors, Vector2 offset, SurfaceKind kind, uint id, int cellIndex)
+        {
+            Vector2 p = P - offset;
+            float reach2 = Reach * Reach;
+            foreach (ref readonly FloorTriangle t in floors)
+            {
+                if (t.ZMax < Low || t.ZMin > High || t.ZMax <= Best.Z
+                    || p.X < t.Min.X - Reach || p.Y < t.Min.Y - Reach || p.X > t.Max.X + Reach || p.Y > t.Max.Y + Reach)
+                {
+                    continue;
+                }
+
+                Vector2 n = t.Nearest(p);
+                float z = t.UnderCentre(p);
+                if (Vector2.DistanceSquared(n, p) <= reach2 && z >= Low && z <= High && z > Best.Z)
+                {
+                    Best = new Support { Z = z, Found = true, Floor = new SurfaceContact(kind, id, t.Normal), CellIndex = cellIndex };
+                }
+            }
+        }
+    }
+
+    /// <summary>Keeps the floor at the level stood on nearest the end.</summary>
+    private struct EdgeScan : IFloorScan
+    {
+        public Vector2 Start;
+        public Vector2 End;
+        public float Reach;
+        public float Level;
+        public float Distance;
+        public Vector2 Nearest;
+        public SurfaceContact Floor;
+
+        public void Scan(ReadOnlySpan<FloorTriangle> floors, Vector2 offset, SurfaceKind kind, uint id, int cellIndex)
+        {
+            Vector2 start = Start - offset, end = End - offset;
+            foreach (ref readonly FloorTriangle t in floors)
+            {
+                Vector2 held = t.Nearest(start);
+                if (Vector2.DistanceSquared(held, start) > Reach * Reach || MathF.Abs(t.UnderCentre(start) - Level) > PhysicsConstants.GroundTolerance)
+                {
+                    continue;
+                }
+
+                Vector2 n = t.Nearest(end);
+                float d = Vector2.DistanceSquared(n, end);
+                if (d < Distance)
+                {
+                    (Distance, Nearest, Floor) = (d, n + offset, new SurfaceContact(kind, id, t.Normal));
+                }
+            }
+        }
+    }
+}
+
+/// <summary>A floor under a body's footprint: its Z (metres), whether found, what it is (kind, id, normal), and the indoor cell that holds it (−1 outdoors).</summary>
+internal struct Support
+{
+    public float Z;
+    public bool Found;
+    public SurfaceContact Floor;
+    public int CellIndex;
+}
