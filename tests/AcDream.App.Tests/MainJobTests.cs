@@ -16,7 +16,7 @@ public sealed class MainJobTests : IDisposable
     public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     [Fact]
-    public void SceneRunner_DefaultScene_VisitsTheCellsInOrder_BothCellarsEnteredAndLeftOnFoot()
+    public void SceneRunner_DefaultScene_VisitsTheCellsInOrder_TheCottagesCellarEnteredByAJumpBsOnFoot()
     {
         WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault());
 
@@ -28,21 +28,26 @@ public sealed class MainJobTests : IDisposable
              0xA9B40170u, 0xA9B40171u, 0xA9B40173u, 0xA9B40172u, 0xA9B40173u, 0xA9B40171u, 0xA9B40174u, 0xA9B40171u],
             $"cells visited (0 = outdoors): {string.Join(" ", visits.Select(v => $"{v.Frame}:{v.CellId:X8}"))}");
         visits.Should().Contain(v => CellIds.LandblockOf(v.CellId) == 0xA8B4FFFFu, "the walk starts west of the seam");
-        record.Legs.Should().OnlyContain(l => l.Reached || l.Leg.To == null || l.Leg.Name.Contains("rock needle") || l.Leg.Name.Contains("wall"),
+        record.Legs.Should().OnlyContain(l => l.Reached || l.Leg.To == null || l.Leg.Name.Contains("rock needle") || l.Leg.Name.Contains("wall") || l.Leg.Name.Contains("edge slide"),
             string.Join(", ", record.Legs.Where(l => !l.Reached).Select(l => l.Leg.Name)));
 
-        // Both cellars are entered down their stairs and left up them, on foot: never airborne, never a drop.
-        record.AirborneFrames.Should().Be(0, "down and up the stairs on foot, no fall");
-        record.Falls().Should().BeEmpty();
+        // In the air only in the legs that jump (the four jumps' rises and falls); never a drop on foot.
+        int[] jumpLegs = [.. record.Legs.Select((l, i) => (l, i)).Where(x => x.l.Leg.Jump).Select(x => x.i)];
+        jumpLegs.Should().HaveCount(4);
+        record.Samples.Where(s => !s.IsOnGround).Should().OnlyContain(
+            s => jumpLegs.Any(i => s.Frame >= record.Legs[i].FirstFrame && s.Frame <= record.Legs[i].LastFrame), "airborne only while jumping");
+        record.Falls().Should().HaveCount(4).And.OnlyContain(f => f.LandingFrame > 0, "every jump lands");
         record.Drops.Should().BeEmpty();
-        foreach ((uint cellar, uint stair, uint room) in new[] { (0xA9B40147u, ObjectPlacements.CottageCellarStair, 0xA9B40143u), (0xA9B40174u, ObjectPlacements.BuildingBCellarStair, 0xA9B40171u) })
+
+        // The cottage's cellar is entered by the jump into its floor opening and left up its stairs; B's entered and left on foot.
+        foreach ((uint cellar, uint stair, uint room, bool onFoot) in new[] { (0xA9B40147u, ObjectPlacements.CottageCellarStair, 0xA9B40143u, false), (0xA9B40174u, ObjectPlacements.BuildingBCellarStair, 0xA9B40171u, true) })
         {
             int enter = visits.ToList().FindIndex(v => v.CellId == cellar);
             enter.Should().BePositive($"0x{cellar:X8} is entered");
             visits[enter - 1].CellId.Should().Be(room, "entered from the room above");
             visits[enter + 1].CellId.Should().Be(room, "and left into it");
             FrameSample[] inCellar = record.Samples.Where(s => s.Frame >= visits[enter].Frame && s.Frame < visits[enter + 1].Frame).ToArray();
-            inCellar.Should().OnlyContain(s => s.IsOnGround);
+            (onFoot ? inCellar : inCellar.SkipWhile(s => !s.IsOnGround)).Should().OnlyContain(s => s.IsOnGround, onFoot ? "on foot" : "on foot once landed");
             inCellar.Min(s => s.Position.Z).Should().BeLessThan(91f, "it reached the cellar floor");
             inCellar.Should().Contain(s => s.FloorObjectId == stair, "on the stair object");
         }
@@ -73,34 +78,68 @@ public sealed class MainJobTests : IDisposable
         needle.Slides.Should().HaveCountGreaterThan(50, $"the leg runs 4 s into the slope; {Slides(2)}")
             .And.OnlyContain(n => n.Z > 0.05f && n.Z < PhysicsConstants.FloorZ, "a slope too steep to climb");
 
-        // Legs 8 and 9 slide along the main room's east wall and the wall under the opening to 0x0142.
-        LegResult east = record.Legs[7], north = record.Legs[8];
+        // Legs 9 and 10 slide along the main room's east wall and the wall under the opening to 0x0142.
+        LegResult east = record.Legs[8], north = record.Legs[9];
         east.Leg.Name.Should().Contain("east wall");
-        east.Slides.Should().HaveCountGreaterThan(20, Slides(8)).And.OnlyContain(n => MathF.Abs(n.X + 1f) < 1e-4f && MathF.Abs(n.Y) < 1e-4f && n.Z == 0f, "the east wall's normal points west");
+        east.Slides.Should().HaveCountGreaterThan(20, Slides(9)).And.OnlyContain(n => MathF.Abs(n.X + 1f) < 1e-4f && MathF.Abs(n.Y) < 1e-4f && n.Z == 0f, "the east wall's normal points west");
         north.Leg.Name.Should().Contain("0x0142");
-        north.Slides.Should().HaveCountGreaterThan(20, Slides(9)).And.OnlyContain(n => MathF.Abs(n.X) < 1e-4f && MathF.Abs(n.Y + 1f) < 1e-4f && n.Z == 0f, "the wall under the opening faces south");
+        north.Slides.Should().HaveCountGreaterThan(20, Slides(10)).And.OnlyContain(n => MathF.Abs(n.X) < 1e-4f && MathF.Abs(n.Y + 1f) < 1e-4f && n.Z == 0f, "the wall under the opening faces south");
         record.Legs.Should().OnlyContain(l => l.Refusals.Count == 0, "the body slides where the point was refused; nothing in the walk refuses it");
 
         string summary = WalkReport.Format(record, "walk.svg");
         string[] lines = summary.Split(System.Environment.NewLine);
         lines.Should().ContainSingle(l => l.StartsWith("   2. run at the rock needle", StringComparison.Ordinal))
             .Which.Should().EndWith($"; slid {needle.Slides.Count} × along a slope's contour, normal ({needle.Slides[0].X:F2}, {needle.Slides[0].Y:F2}, {needle.Slides[0].Z:F2})", summary);
-        lines.Should().ContainSingle(l => l.StartsWith("   8. ", StringComparison.Ordinal)).Which.Should().EndWith($"; slid {east.Slides.Count} × along a wall, normal (-1.00, 0.00)", summary);
-        lines.Should().ContainSingle(l => l.StartsWith("   9. ", StringComparison.Ordinal)).Which.Should().EndWith($"; slid {north.Slides.Count} × along a wall, normal (0.00, -1.00)", summary);
+        lines.Should().ContainSingle(l => l.StartsWith("   9. ", StringComparison.Ordinal)).Which.Should().EndWith($"; slid {east.Slides.Count} × along a wall, normal (-1.00, 0.00)", summary);
+        lines.Should().ContainSingle(l => l.StartsWith("  10. ", StringComparison.Ordinal)).Which.Should().EndWith($"; slid {north.Slides.Count} × along a wall, normal (0.00, -1.00)", summary);
         int wallSlides = record.Samples.Count(s => s.Slide is { Z: 0f });
         lines.Should().ContainSingle(l => l.StartsWith("Slid moves: ", StringComparison.Ordinal)).Which.Should().Be(
             $"Slid moves: {wallSlides} along walls, {record.SlideCount - wallSlides} along slopes' contours.", summary);
         wallSlides.Should().BeGreaterThan(east.Slides.Count + north.Slides.Count - 1);
         lines.Should().ContainSingle(l => l.StartsWith("Refused moves: ", StringComparison.Ordinal)).Which.Should().Be(
-            "Refused moves: 0 step too high (> 0.6 m), 0 slope too steep, 0 wall, 0 outer wall, 0 unloaded land ahead, 0 edge of the world.");
+            "Refused moves: 0 step too high (> 0.6 m), 0 slope too steep, 0 wall, 0 outer wall, 0 unloaded land ahead, 0 edge of the world, 0 held at an edge.");
         lines.Should().Contain(l => l.StartsWith("Effects: ", StringComparison.Ordinal) && l.Contains("a body (an upright cylinder of radius 0.48 m, 1.835 m tall)"), summary);
+    }
+
+    [Fact]
+    public void SceneRunner_DefaultScene_JumpsMeetTheCeilingLandInTheCellarAndOnThePlinthAndEdgeSlide()
+    {
+        WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault());
+        LegResult Leg(string start) => record.Legs.Single(l => l.Leg.Name.StartsWith(start, StringComparison.Ordinal));
+        FrameSample[] Frames(LegResult leg) => record.Samples.Where(s => s.Frame >= leg.FirstFrame && s.Frame <= leg.LastFrame).ToArray();
+
+        // The jump in the main room: the head meets its ceiling (96.8 m) once, never above it, and the player lands in the room.
+        LegResult room = Leg("jump in the main room");
+        room.Air.Should().Be((1, 1, 1, 0), "one jump, one head hit, one landing");
+        Frames(room).Should().OnlyContain(s => s.CellId == 0xA9B40143u && s.Position.Z + MoverBody.Player.Height <= 96.801f, "in the room, under its ceiling");
+        Frames(room)[^1].Position.Z.Should().Be(94f);
+
+        // The running jump into the floor opening lands on the cellar's floor (90.95 m) in 0x0147.
+        LegResult drop = Leg("running jump east into the floor opening");
+        drop.Reached.Should().BeTrue();
+        drop.Air.Should().Be((1, 1, 1, 0));
+        FrameSample landed = Frames(drop)[^1];
+        (landed.CellId, landed.Position.Z, landed.IsOnGround).Should().Be((0xA9B40147u, 90.95f, true), "on the cellar's floor");
+
+        // The jump onto the plinth from beside it lands on its top (96 m); along its edge, edge slide keeps the player on it.
+        LegResult plinth = Leg("jump onto the plinth from beside it");
+        plinth.Air.Jumps.Should().Be(1);
+        (Frames(plinth)[^1].Position.Z, Frames(plinth)[^1].IsOnGround).Should().Be((96f, true), "on the plinth");
+        LegResult edge = Leg("along the plinth's east edge");
+        edge.Air.EdgeSlides.Should().BeGreaterThan(30);
+        Frames(edge).Should().OnlyContain(s => s.IsOnGround && s.Position.Z == 96f, "never off the plinth");
+
+        string[] lines = WalkReport.Format(record, "walk.svg").Split(System.Environment.NewLine);
+        (int jumps, int headHits, int landings, int edgeSlides) = record.Air;
+        lines.Should().Contain($"Jumps: {jumps}; head hits: {headHits}; landings: {landings}; edge slides (held at a floor's edge): {edgeSlides}.");
+        jumps.Should().Be(4);
     }
 
     [Fact]
     public void SceneRunner_DefaultScene_EastWallLegSlidesNorthAlongTheWallItsRadiusAway()
     {
         WalkRecord record = SceneRunner.Run(SceneReader.ReadDefault());
-        LegResult leg = record.Legs[7];
+        LegResult leg = record.Legs[8];
         const float wallX = 142.1f; // the main room 0x0143's east wall, landblock-local = world here
         FrameSample[] frames = record.Samples.Where(s => s.Frame >= leg.FirstFrame - 1 && s.Frame <= leg.LastFrame).ToArray();
 

@@ -127,6 +127,13 @@ public class ObjectHostTests
         record.AirborneFrames.Should().Be(0, "up and down on foot");
         record.Final.Position.Z.Should().BeApproximately(HoltburgWorld.StaircaseFlatZ, 1e-3f, "back on the flat land");
 
+        // Beside the treads (the body's centre 0.2 m past their east edge), the treads under its edge hold it: it climbs.
+        LegResult beside = record.Legs.Single(l => l.Leg.Name.StartsWith("north beside the treads", StringComparison.Ordinal));
+        FrameSample[] climb = record.Samples.Where(s => s.Frame >= beside.FirstFrame && s.Frame <= beside.LastFrame).ToArray();
+        climb.Should().OnlyContain(s => s.IsOnGround && s.Position.X == 132.95f, "on foot, its centre beside the treads");
+        climb.Max(s => s.Position.Z).Should().BeGreaterThan(61.7f, "it climbed beside them");
+        climb.Should().Contain(s => s.FloorObjectId == ObjectPlacements.StairPiece, "held by the stair pieces");
+
         string summary = WalkReport.Format(record, "x.svg");
         summary.Should().Contain("Objects: staircase (world staircase); registered 8 in 0xF682.");
         summary.Should().MatchRegex(@"Object floors stood on: 0x01000AC5 stair piece: \d+ frames");

@@ -431,4 +431,85 @@ public class PlayerMovementModeTests
         mode.CellId.Should().Be(0xA9B40174u);
         mode.Position.Z.Should().BeApproximately(90.001f, 1e-3f, "the cellar floor's Z");
     }
+
+    [Theory]
+    [InlineData(100, 1f, 1.6357143f)]
+    [InlineData(0, 1f, 0.35f)]
+    [InlineData(200, 1f, 3.01f)]
+    [InlineData(100, 0.5f, 0.8178571f)]
+    [InlineData(100, 0f, 0.35f)]
+    public void JumpHeight_IsTheGamesFormulaAtLeast35Centimetres(int skill, float power, float height)
+    {
+        var mode = new PlayerMovementMode(Flat(50), new Vector3(96f, 96f, 50f), 0xA9B40001u, 0f, MovementOptions.Player) { JumpSkill = skill, JumpPower = power };
+        mode.JumpHeight.Should().BeApproximately(height, 1e-5f, "(skill / (skill + 1300) · 22.2 + 0.05) · power, at least 0.35 m");
+        mode.Jump().Should().BeTrue();
+        mode.VerticalSpeed.Should().BeApproximately(MathF.Sqrt(2f * 9.8f * height), 1e-4f, "vz = √(2 g h)");
+    }
+
+    [Fact]
+    public void Jump_OnFlatGround_RisesItsHeightAndLandsAfterTheAnalyticTime()
+    {
+        var mode = new PlayerMovementMode(Flat(50), new Vector3(96f, 96f, 50f), 0xA9B40001u, 0f, MovementOptions.Player);
+        mode.Jump().Should().BeTrue();
+        mode.Jump().Should().BeFalse("not again in the air");
+        float top = 50f;
+        int frames = 0;
+        MovementFrame first = default;
+        int landings = 0;
+        do
+        {
+            MovementFrame f = mode.Update(Idle, Frame);
+            first = frames == 0 ? f : first;
+            landings += f.Landings;
+            top = MathF.Max(top, mode.Position.Z);
+            frames++;
+        }
+        while (!mode.IsOnGround && frames < 200);
+
+        double analytic = 2 * Math.Sqrt(2 * mode.JumpHeight / 9.8);
+        (top - 50f).Should().BeApproximately(mode.JumpHeight, 0.02f, "the jump rises its height (sampled at 30 Hz)");
+        Math.Abs((frames * Frame) - analytic).Should().BeLessThanOrEqualTo(Frame, "lands within a frame of 2√(2h/g)");
+        mode.Position.Z.Should().Be(50f);
+        mode.VerticalSpeed.Should().Be(0f, "a landing zeroes the downward speed");
+        landings.Should().Be(1);
+    }
+
+    [Fact]
+    public void Jump_UnderTheMainRoomsCeiling_HitsItsHeadZeroesItsUpwardSpeedAndLandsInTheRoom()
+    {
+        PhysicsEngine engine = HoltburgEngine();
+        var mode = new PlayerMovementMode(engine, new Vector3(139.2f, 10.5f, 94f), 0xA9B40143u, 0f, MovementOptions.Player);
+        mode.Update(Idle, Frame);
+        mode.Update(new MovementIntent(0f, 0f, 0f, false, Jump: true), Frame).Jumps.Should().Be(1);
+        int headHits = 0, frames = 0;
+        while (!mode.IsOnGround && frames++ < 100)
+        {
+            float before = mode.VerticalSpeed;
+            MovementFrame f = mode.Update(Idle, Frame);
+            headHits += f.HeadHits;
+            if (f.HeadHits > 0)
+            {
+                before.Should().BeGreaterThan(0f, "rising when it met the ceiling");
+                mode.VerticalSpeed.Should().BeLessThanOrEqualTo(0f, "a head hit zeroes the upward speed (then gravity)");
+            }
+
+            (mode.Position.Z + 1.835f).Should().BeLessThanOrEqualTo(96.801f, "never through the ceiling at 96.8 m");
+            mode.CellId.Should().Be(0xA9B40143u);
+        }
+
+        headHits.Should().Be(1);
+        mode.Position.Z.Should().Be(94f);
+    }
+
+    [Theory]
+    [InlineData(-1, 1f, "JumpSkill")]
+    [InlineData(100, 1.5f, "JumpPower")]
+    [InlineData(100, -0.1f, "JumpPower")]
+    [InlineData(100, float.NaN, "JumpPower")]
+    public void JumpSettings_OutOfRange_AreRefusedNamingTheSetting(int skill, float power, string name)
+    {
+        var mode = new PlayerMovementMode(Flat(50), new Vector3(96f, 96f, 50f), 0xA9B40001u, 0f, MovementOptions.Player);
+        Action act = () => { mode.JumpSkill = skill; mode.JumpPower = power; };
+        act.Should().Throw<ArgumentOutOfRangeException>().Which.ParamName.Should().Be(name);
+    }
 }

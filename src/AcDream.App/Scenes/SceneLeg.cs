@@ -4,7 +4,8 @@ namespace AcDream.App.Scenes;
 
 /// <summary>
 /// One leg of a scene: either walk to a point (<see cref="To"/> set; the mover faces it each frame
-/// and slows to land on it), or hold an intent (forward, strafe, turn) for <see cref="Seconds"/>.
+/// and slows to land on it; reached when there on the ground), or hold an intent (forward, strafe, turn) for
+/// <see cref="Seconds"/>; either may start with a jump.
 /// </summary>
 /// <param name="Name">Shown in the summary.</param>
 /// <param name="To">Target point, world metres; null for an intent leg.</param>
@@ -14,4 +15,6 @@ namespace AcDream.App.Scenes;
 /// <param name="Run">Run speed instead of walk speed.</param>
 /// <param name="Backward">Point leg: walk there backwards, facing away from it.</param>
 /// <param name="Seconds">Intent leg: its length; point leg: the time limit after which it stops unreached.</param>
-internal sealed record SceneLeg(string Name, Vector2? To, float Forward, float Strafe, float Turn, bool Run, bool Backward, float Seconds);
+/// <param name="Jump">Jump on the leg's first frame (when the effects move the body vertically and it is on the ground).</param>
+/// <param name="JumpSkill">The jump skill for the leg (<see cref="Movement.PlayerMovementMode.JumpSkill"/>).</param>
+internal sealed record SceneLeg(string Name, Vector2? To, float Forward, float Strafe, float Turn, bool Run, bool Backward, float Seconds, bool Jump = false, int JumpSkill = Movement.PlayerMovementMode.DefaultJumpSkill);

@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using System.Reflection;
 using System.Text.Json;
+using AcDream.App.Movement;
 using AcDream.App.World;
 using AcDream.Core.Physics;
 
@@ -22,6 +23,9 @@ internal static class SceneReader
     /// <summary>Longest leg, seconds.</summary>
     public const float MaxLegSeconds = 600f;
 
+    /// <summary>Largest jump skill a leg may give (the game's skills stay far below it).</summary>
+    public const float MaxJumpSkill = 10_000f;
+
     /// <summary>How far a start may be from the centre landblock's middle (96, 96), metres, along X and along Y: the 3 × 3 landblocks around Holtburg and one more ring (the world is bigger, the walk is not).</summary>
     public const float MaxStartDistance = 2 * PhysicsConstants.LandblockSize;
 
@@ -35,7 +39,7 @@ internal static class SceneReader
     private static readonly string[] EffectFields = ["stepDownHeight", "walkableSlope", "sweepStepLength", "doorsOnly", "body", "vertical", "footing", "edgeSlide"];
     private static readonly string[] BodyFields = ["radius", "height"];
     private static readonly string[] StartFields = ["position", "heading"];
-    private static readonly string[] LegFields = ["name", "to", "forward", "strafe", "turn", "run", "backward", "seconds"];
+    private static readonly string[] LegFields = ["name", "to", "forward", "strafe", "turn", "run", "backward", "seconds", "jump", "jumpSkill"];
 
     /// <summary>The embedded default scene.</summary>
     public static Scene ReadDefault()
@@ -241,6 +245,12 @@ internal static class SceneReader
         string name = context.RequireString(leg, "name", $"{path}.name");
         bool run = context.OptionalBool(leg, "run", $"{path}.run");
         bool backward = context.OptionalBool(leg, "backward", $"{path}.backward");
+        bool jump = context.OptionalBool(leg, "jump", $"{path}.jump");
+        float skill = context.OptionalNumber(leg, "jumpSkill", $"{path}.jumpSkill", PlayerMovementMode.DefaultJumpSkill, 0f, MaxJumpSkill);
+        if (skill != MathF.Floor(skill))
+        {
+            throw context.Error($"{path}.jumpSkill", leg.GetProperty("jumpSkill"), "must be a whole number");
+        }
 
         bool hasIntent = leg.TryGetProperty("forward", out _) || leg.TryGetProperty("strafe", out _) || leg.TryGetProperty("turn", out _);
         if (leg.TryGetProperty("to", out _))
@@ -252,7 +262,7 @@ internal static class SceneReader
 
             Vector2 to = context.RequirePoint(leg, "to", $"{path}.to");
             float limit = context.OptionalNumber(leg, "seconds", $"{path}.seconds", DefaultPointLegSeconds, float.Epsilon, MaxLegSeconds);
-            return new SceneLeg(name, to, 0f, 0f, 0f, run, backward, limit);
+            return new SceneLeg(name, to, 0f, 0f, 0f, run, backward, limit, jump, (int)skill);
         }
 
         if (leg.TryGetProperty("backward", out JsonElement backwardElement))
@@ -274,7 +284,7 @@ internal static class SceneReader
         }
 
         float seconds = context.OptionalNumber(leg, "seconds", $"{path}.seconds", 0f, float.Epsilon, MaxLegSeconds);
-        return new SceneLeg(name, null, forward, strafe, turn, run, false, seconds);
+        return new SceneLeg(name, null, forward, strafe, turn, run, false, seconds, jump, (int)skill);
     }
 
     /// <summary>Error helpers that name the source, the field and the value.</summary>

@@ -64,6 +64,8 @@ internal static class SceneRunner
             var refusals = new Dictionary<ResolveOutcome, int>();
             var slides = new List<Vector3>();
             bool reached = false;
+            mode.JumpSkill = leg.JumpSkill;
+            (int Jumps, int HeadHits, int Landings, int EdgeSlides) air = default;
             for (int n = 0; ; n++)
             {
                 MovementIntent intent;
@@ -71,7 +73,7 @@ internal static class SceneRunner
                 {
                     Vector2 away = to - new Vector2(mode.Position.X, mode.Position.Y);
                     float distance = away.Length();
-                    if (distance <= ArrivalDistance)
+                    if (distance <= ArrivalDistance && mode.IsOnGround)
                     {
                         reached = true;
                         break;
@@ -82,10 +84,11 @@ internal static class SceneRunner
                         break;
                     }
 
-                    mode.Heading = MathF.Atan2(away.X, away.Y) + (leg.Backward ? MathF.PI : 0f);
+                    // There in the air: wait to come down, not moving across.
+                    mode.Heading = distance > ArrivalDistance ? MathF.Atan2(away.X, away.Y) + (leg.Backward ? MathF.PI : 0f) : mode.Heading;
                     float stepLength = (leg.Run ? PlayerMovementMode.RunSpeed : PlayerMovementMode.WalkSpeed) * dt;
                     float speed = MathF.Min(1f, distance / stepLength);
-                    intent = new MovementIntent(leg.Backward ? -speed : speed, 0f, 0f, leg.Run);
+                    intent = new MovementIntent(leg.Backward ? -speed : speed, 0f, 0f, leg.Run, leg.Jump && n == 0);
                 }
                 else
                 {
@@ -95,7 +98,7 @@ internal static class SceneRunner
                         break;
                     }
 
-                    intent = new MovementIntent(leg.Forward, leg.Strafe, leg.Turn, leg.Run);
+                    intent = new MovementIntent(leg.Forward, leg.Strafe, leg.Turn, leg.Run, leg.Jump && n == 0);
                 }
 
                 if (maxFrames is int max && frame >= max)
@@ -121,7 +124,8 @@ internal static class SceneRunner
                 }
 
                 var sample = new FrameSample(frame, mode.Position, mode.CellId, mode.IsOnGround, moved.LastRefusal, slide,
-                    FloorObject(mode, moved), WallObject(moved, slide));
+                    FloorObject(mode, moved), WallObject(moved, slide), moved);
+                air = (air.Jumps + moved.Jumps, air.HeadHits + moved.HeadHits, air.Landings + moved.Landings, air.EdgeSlides + moved.EdgeSlides);
                 if (before.IsOnGround && sample.IsOnGround && before.Position.Z - sample.Position.Z > PlayerMovementMode.StepUpHeight)
                 {
                     drops.Add(new Drop(frame, before.Position.Z, before.CellId, sample.Position.Z, sample.CellId));
@@ -130,7 +134,7 @@ internal static class SceneRunner
                 samples.Add(sample);
             }
 
-            legs.Add(new LegResult(leg, first, frame, reached, refusals, slides));
+            legs.Add(new LegResult(leg, first, frame, reached, refusals, slides) { Air = air });
             if (truncated)
             {
                 break;

@@ -12,7 +12,8 @@ namespace AcDream.App.Scenes;
 /// <param name="Slide">The engine's surface normal of this frame's last step answered <see cref="ResolveOutcome.Slid"/> (a wall's, horizontal, or a slope's); null when none slid.</param>
 /// <param name="FloorObjectId">The object whose floor the mover stands on, as the engine reported it (<see cref="MoveReport.Floor"/>); 0 for the terrain or a cell's floor, or in the air.</param>
 /// <param name="WallObjectId">For a frame refused as Wall or OuterWall or slid along a wall: the object whose wall, shell or cylinder the engine reported it met (<see cref="MoveReport.Wall"/>); 0 otherwise or when it was a cell's wall.</param>
-internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null, uint FloorObjectId = 0, uint WallObjectId = 0);
+/// <param name="Moved">What the frame's movement did as the engine reported it (jumps, head hits, landings, edge slides among it).</param>
+internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null, uint FloorObjectId = 0, uint WallObjectId = 0, Movement.MovementFrame Moved = default);
 
 /// <summary>How a leg ended.</summary>
 /// <param name="Leg">The leg.</param>
@@ -21,7 +22,11 @@ internal readonly record struct FrameSample(int Frame, Vector3 Position, uint Ce
 /// <param name="Reached">Point leg: whether the point was reached; intent leg: whether it ran its full time.</param>
 /// <param name="Refusals">Frames with a refused move during the leg, by the engine's outcome.</param>
 /// <param name="Slides">The frames during the leg with a move the engine answered <see cref="ResolveOutcome.Slid"/>: the surface's normal the engine reported, one per such frame, in frame order.</param>
-internal sealed record LegResult(SceneLeg Leg, int FirstFrame, int LastFrame, bool Reached, IReadOnlyDictionary<ResolveOutcome, int> Refusals, IReadOnlyList<Vector3> Slides);
+internal sealed record LegResult(SceneLeg Leg, int FirstFrame, int LastFrame, bool Reached, IReadOnlyDictionary<ResolveOutcome, int> Refusals, IReadOnlyList<Vector3> Slides)
+{
+    /// <summary>The leg's frames' jumps, head hits, landings and edge slides (<see cref="Movement.MovementFrame"/>).</summary>
+    public (int Jumps, int HeadHits, int Landings, int EdgeSlides) Air { get; init; }
+}
 
 /// <summary>A landblock registered in or removed from the engine; <paramref name="Objects"/>: how many objects were registered with it.</summary>
 internal readonly record struct StreamingEvent(int Frame, uint LandblockId, bool Loaded, int Objects = 0);
@@ -86,6 +91,10 @@ internal sealed record WalkRecord(
 
     /// <summary>Frames over the whole walk whose move the engine refused with <paramref name="outcome"/>.</summary>
     public int RefusalCount(ResolveOutcome outcome) => Samples.Count(s => s.Refusal == outcome);
+
+    /// <summary>The walk's jumps, head hits, landings and edge slides, over every frame.</summary>
+    public (int Jumps, int HeadHits, int Landings, int EdgeSlides) Air =>
+        (Samples.Sum(s => s.Moved.Jumps), Samples.Sum(s => s.Moved.HeadHits), Samples.Sum(s => s.Moved.Landings), Samples.Sum(s => s.Moved.EdgeSlides));
 
     /// <summary>Frames over the whole walk with a move the engine answered <see cref="ResolveOutcome.Slid"/>.</summary>
     public int SlideCount => Samples.Count(s => s.Slide is not null);

@@ -53,7 +53,7 @@ internal static class WalkReport
             string outcome = leg.Leg.To is null ? (leg.Reached ? "done" : "cut short") : (leg.Reached ? "reached" : "NOT reached");
             string refused = leg.Refusals.Count == 0 ? "" : "; refused " + string.Join(", ", leg.Refusals.OrderBy(r => r.Key).Select(r => $"{r.Value} × {Describe(r.Key)}"));
             string slid = leg.Slides.Count == 0 ? "" : "; slid " + DescribeSlides(leg.Slides);
-            Line($"  {number++,2}. {leg.Leg.Name}: {outcome}, frames {leg.FirstFrame}-{leg.LastFrame}{slid}{refused}");
+            Line($"  {number++,2}. {leg.Leg.Name}: {outcome}, frames {leg.FirstFrame}-{leg.LastFrame}{slid}{refused}{DescribeAir(leg.Air)}");
         }
 
         text.AppendLine();
@@ -61,6 +61,8 @@ internal static class WalkReport
         int wallSlides = record.Samples.Count(s => s.Slide is Vector3 n && IsWall(n));
         Line($"Slid moves: {wallSlides} along walls, {record.SlideCount - wallSlides} along slopes' contours.");
         AddObjects(text, record);
+        (int jumps, int headHits, int landings, int edgeSlides) = record.Air;
+        Line($"Jumps: {jumps}; head hits: {headHits}; landings: {landings}; edge slides (held at a floor's edge): {edgeSlides}.");
         Line($"Airborne: {record.AirborneFrames} frames.");
         foreach (Fall fall in record.Falls())
         {
@@ -171,6 +173,20 @@ internal static class WalkReport
         if (effects.Body is MoverBody body)
         {
             on.Add(FormattableString.Invariant($"a body (an upright cylinder of radius {body.Radius} m, {body.Height} m tall) that slides along walls"));
+            if (effects.Vertical)
+            {
+                on.Add("vertical motion (jumps and falls swept: ceilings stop them, the first floor lands them)");
+            }
+
+            if (effects.Footing)
+            {
+                on.Add("footing under the body (half its radius past an edge)");
+            }
+
+            if (effects.EdgeSlide)
+            {
+                on.Add("edge slide");
+            }
         }
 
         return on.Count == 0 ? "none (the spec's literal engine)" : string.Join(", ", on);
@@ -237,8 +253,29 @@ internal static class WalkReport
         ResolveOutcome.Moved => "moved",
         ResolveOutcome.Slid => "slid",
         ResolveOutcome.Held => "held (land not loaded)",
+        ResolveOutcome.Edge => "held at an edge",
+        ResolveOutcome.Ceiling => "head hit",
         _ => outcome.ToString(),
     };
+
+    /// <summary>A leg's jumps, head hits, landings and edge slides, when it had any.</summary>
+    private static string DescribeAir((int Jumps, int HeadHits, int Landings, int EdgeSlides) air)
+    {
+        var parts = new List<string>();
+        void Add(int count, string what)
+        {
+            if (count > 0)
+            {
+                parts.Add(string.Create(CultureInfo.InvariantCulture, $"{count} × {what}"));
+            }
+        }
+
+        Add(air.Jumps, "jump");
+        Add(air.HeadHits, "head hit");
+        Add(air.Landings, "landing");
+        Add(air.EdgeSlides, "edge slide");
+        return parts.Count == 0 ? "" : "; " + string.Join(", ", parts);
+    }
 
     /// <summary>The engine's outcomes that are refusals (<see cref="ResolveResult.IsRefused"/>), in the engine's order.</summary>
     private static IEnumerable<ResolveOutcome> Refusals =>
