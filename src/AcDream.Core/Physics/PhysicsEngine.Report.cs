@@ -13,7 +13,7 @@ public sealed partial class PhysicsEngine
     /// </summary>
     /// <param name="currentPos">Where the mover's feet are, world metres.</param>
     /// <param name="currentCellId">The cell the mover is in (<c>0xXXYYCCCC</c>).</param>
-    /// <param name="delta">The intended move, world metres; its Z is ignored.</param>
+    /// <param name="delta">The intended move, world metres; its Z is ignored unless <see cref="MovementOptions.Vertical"/> (with a body) moves the body up and down by it.</param>
     /// <param name="stepUpHeight">Highest rise one move (one sub-step when sweeping) may climb, metres, ≥ 0.</param>
     /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
     /// <param name="report">What the move met.</param>

@@ -64,10 +64,17 @@ public class AnswerInvariantTests
                 var pos = new Vector3(offset.X + local.X, offset.Y + local.Y, ground + Gen.Range(random, -0.3, 0.6));
                 uint cell = room?.CellId ?? (id & 0xFFFF0000u);
                 float step = Gen.Range(random, 0.2, 1.2);
+                bool onGroundBefore = true;
                 for (int m = 0; m < 40; m++)
                 {
                     // Mostly walking-sized moves, some long; a fifth of them aimed at a room's wall edge.
                     var delta = new Vector3(Gen.Range(random, -0.5, 0.5), Gen.Range(random, -0.5, 0.5), 0) * (random.Next(8) == 0 ? 12 : 1);
+                    if (options.Vertical)
+                    {
+                        // The body moves up and down itself: a fall in the air, now and then a jump.
+                        delta.Z = !onGroundBefore ? -1f : random.Next(10) == 0 ? 0.3f : 0f;
+                    }
+
                     string what = $"seed {seed}, {effects}, world {w} (0x{id:X8}, {frame}), walk {walk}, move {m}: {pos:R} in 0x{cell:X8} by {delta:R}, step {step:R}";
                     ResolveResult r = engine.Resolve(pos, cell, delta, step, options);
                     CheckHonestGround(engine, terrain, cells, r, what, options);
@@ -83,8 +90,10 @@ public class AnswerInvariantTests
                     airborne += r.IsOnGround ? 0 : 1;
                     indoors += (r.CellId & 0xFFFF) >= 0x100 ? 1 : 0;
 
-                    // Keep walking from the answer; a mover in mid-air drops a little, as under gravity.
-                    pos = r.IsOnGround ? r.Position : r.Position with { Z = r.Position.Z - 0.2f };
+                    // Keep walking from the answer; a mover in mid-air drops a little, as under gravity (the body with vertical
+                    // motion by its next delta).
+                    pos = r.IsOnGround || options.Vertical ? r.Position : r.Position with { Z = r.Position.Z - 0.2f };
+                    onGroundBefore = r.IsOnGround;
                     cell = r.CellId;
                 }
             }

@@ -51,9 +51,15 @@ public class BodyAnswerInvariantTests
             float ground = room is null ? terrain.SampleZ(local.X, local.Y) : room.SampleFloorZ(local.X, local.Y, 200f) ?? 94f;
             var pos = origin + new Vector3(local, ground + (float)(random.NextDouble() * 0.9) - 0.3f);
             float step = 0.3f + (float)(random.NextDouble() * 0.9);
+            bool onGroundBefore = true;
             for (int m = 0; m < 30; m++)
             {
                 var delta = new Vector3((float)(random.NextDouble() * 0.8) - 0.4f, (float)(random.NextDouble() * 0.8) - 0.4f, 0) * (random.Next(8) == 0 ? 6 : 1);
+                if (options.Vertical)
+                {
+                    delta.Z = !onGroundBefore ? -1f : random.Next(10) == 0 ? 0.3f : 0f; // the body falls and jumps by its delta
+                }
+
                 string what = $"{frame}, {effects}, walk {walk}, move {m}: {pos:R} in 0x{cell:X8} by {delta:R}, step {step:R}";
                 ResolveResult r = engine.Resolve(pos, cell, delta, step, options);
                 CheckHonestGround(engine, terrain, r, what, options);
@@ -67,8 +73,9 @@ public class BodyAnswerInvariantTests
                 onGround += r.IsOnGround ? 1 : 0;
                 indoors += CellIds.IsIndoor(r.CellId) ? 1 : 0;
                 touched += r.Outcome is ResolveOutcome.Slid or ResolveOutcome.Wall ? 1 : 0;
-                pos = r.IsOnGround ? r.Position : r.Position with { Z = r.Position.Z - 0.2f };
+                pos = r.IsOnGround || options.Vertical ? r.Position : r.Position with { Z = r.Position.Z - 0.2f };
                 cell = r.CellId;
+                onGroundBefore = r.IsOnGround;
             }
         }
 

@@ -82,9 +82,13 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
         bool landed = false;
         for (int k = 0; k < steps; k++)
         {
+            // Falling, the move across steps down as far as this sub-step falls: it lands on the ground under its end
+            // within that depth (or under its footprint), else it is that much lower, over the cell whose surface is below.
+            // (Two ground tolerances more: lowered by the fall, feet that close to the ground would be standing on it.)
+            MovementOptions fall = up < 0f && !landed ? q.Options with { StepDownHeight = -up + (2f * PhysicsConstants.GroundTolerance) } : air;
             MoveQuery move = landed
                 ? q.With(at.Position, at.CellId, across, q.StepUp, in q.Options)
-                : q.With(at.Position, at.CellId, across, step, in air);
+                : q.With(at.Position, at.CellId, across, step, in fall);
             ResolveResult moved = Walk(ref move);
             if (moved.IsRefused || moved.Outcome == ResolveOutcome.Slid)
             {
@@ -100,17 +104,19 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
 
             if (up > 0f)
             {
-                float rise = planner.Rise(ref move, at.Position, at.CellId, q.Options.Body!.Value, up, out Vector3 ceiling);
-                at = Settle(ref move, at.Position with { Z = at.Position.Z + rise }, at.CellId, in air);
+                float rise = planner.Rise(ref move, at.Position, at.CellId, q.Options.Body!.Value, up, out Vector3 ceiling, out bool settle);
+                Vector3 risen = at.Position with { Z = at.Position.Z + rise };
+                at = settle || !move.Open || rise == 0f
+                    ? Settle(ref move, risen, at.CellId, in air)
+                    : new ResolveResult(risen, at.CellId, false); // nothing near, no opening overhead: where it rose to is the answer of resting there
                 if (rise < up)
                 {
                     (outcome, normal, up) = (ResolveOutcome.Ceiling, ceiling, 0f);
                 }
             }
-            else if (up < 0f)
+            else if (up < 0f && at.Outcome != ResolveOutcome.Held)
             {
-                at = Fall(ref move, at, -up, in air);
-                landed = at.IsOnGround;
+                at = at with { Position = at.Position with { Z = at.Position.Z + up } };
             }
         }
 
@@ -122,21 +128,6 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
         }
 
         return at with { Outcome = outcome, SurfaceNormal = normal };
-    }
-
-    /// <summary>
-    /// A fall of <paramref name="depth"/> metres from <paramref name="at"/>: onto the first ground under the body within it
-    /// (the point's ground, as a step down of that depth finds it, or a floor under its footprint), at the point of
-    /// contact; else the body is in the air that much lower.
-    /// </summary>
-    private ResolveResult Fall(ref MoveQuery q, ResolveResult at, float depth, in MovementOptions air)
-    {
-        MovementOptions drop = q.Options with { StepDownHeight = depth };
-        MoveQuery down = q.With(at.Position, at.CellId, Vector2.Zero, q.StepUp, in drop);
-        ResolveResult landed = Walk(ref down);
-        return landed.IsOnGround
-            ? landed
-            : Settle(ref q, at.Position with { Z = at.Position.Z - depth }, landed.CellId, in air);
     }
 
     /// <summary>The body at rest at <paramref name="position"/> in the air: not moving, not stepping down, its cell and footing found there.</summary>
@@ -155,9 +146,9 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
     /// </summary>
     private ResolveResult Foot(ref MoveQuery q, ResolveResult result)
     {
-        if (!q.Options.Footing || result.Outcome == ResolveOutcome.Held)
+        if (!q.Options.Footing || result.Outcome == ResolveOutcome.Held || (q.Open && (result.IsOnGround || !CellIds.IsIndoor(result.CellId))))
         {
-            return result;
+            return result; // (nothing near the move: the ground under the centre is all there is)
         }
 
         float reach = q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach;
@@ -170,6 +161,12 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
             }
 
             float z = result.Position.Z;
+            if (result.IsOnGround && place.CellIndex >= 0 && place.Entry.Cells[place.CellIndex] is { Objects.Length: 0 } level
+                && level.FloorLevel == z && (q.CellId == result.CellId || !CellIds.IsIndoor(q.CellId)))
+            {
+                return result; // on a cell whose floors are all at this height, with nothing standing in it: nothing higher holds it
+            }
+
             float low = result.IsOnGround ? z + PhysicsConstants.GroundTolerance : z - (q.Options.StepDownHeight ?? 0f) - PhysicsConstants.GroundTolerance;
             int start = CellIds.IsIndoor(q.CellId) && CellIds.IsIndoor(result.CellId) && (q.CellId >> 16) == (result.CellId >> 16)
                 && place.Entry.TryGetCellIndex(q.CellId, out int index) ? index : -1;
@@ -211,8 +208,15 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
             return true;
         }
 
+        // The ground under the centre: the terrain or the cell's floor at the feet first (the common case, cheap), then
+        // with the objects' floors.
         const float tolerance = PhysicsConstants.GroundTolerance;
-        if (Ground.TryUnder(ref q.Lands, in place, q.Z, tolerance, out float z, out _) && MathF.Abs(z - q.Z) <= tolerance)
+        Vector2 p = place.Local;
+        float z = place.CellIndex < 0
+            ? place.Entry.Terrain.SampleZUnchecked(p.X, p.Y)
+            : place.Entry.Cells[place.CellIndex].TrySampleFloor(p.X, p.Y, q.Z, out float floor) ? floor : float.NaN;
+        if (MathF.Abs(z - q.Z) <= tolerance
+            || (Ground.TryUnder(ref q.Lands, in place, q.Z, tolerance, out z, out _) && MathF.Abs(z - q.Z) <= tolerance))
         {
             return true;
         }

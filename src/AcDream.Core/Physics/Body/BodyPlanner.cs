@@ -51,6 +51,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
             if (open.IsOpen(Vector2.Min(local, end) - new Vector2(grow), Vector2.Max(local, end) + new Vector2(grow), move.ZLow, move.ZHigh, local - new Vector2(reach), local + new Vector2(reach)))
             {
                 (points[0], points[1], path.Count) = (local, end, 2);
+                q.Open = entry.Cells[cellIndex] is { Objects.Length: 0 } cell && !float.IsNaN(cell.FloorLevel);
                 return true;
             }
         }
@@ -87,7 +88,9 @@ internal sealed class BodyPlanner(WorldFrame frame)
         // move is the point's.
         float grow = body.Radius + Skin(lbX, lbY, local, delta.Length() + body.Radius) + PhysicsConstants.ContactTolerance;
         Vector2 min = Vector2.Min(local, local + delta) - new Vector2(grow), max = Vector2.Max(local, local + delta) + new Vector2(grow);
-        return !WallSet.AnyOutdoors(ref q.Lands, entry, min, max);
+        bool open = !WallSet.AnyOutdoors(ref q.Lands, entry, min, max);
+        q.Open = open && !entry.FloorsBeyondWalls && !q.Lands.ReachInto(entry).Meets(min, max);
+        return open;
     }
 
     /// <summary>
@@ -169,15 +172,19 @@ internal sealed class BodyPlanner(WorldFrame frame)
     /// disc (<see cref="Overhead"/>): a ceiling, a lintel, an upper floor, an object's underside, among the cells and
     /// objects around it (<see cref="WallSet"/>). Stopped, it keeps a gap of the body's skin under the surface, and
     /// <paramref name="normal"/> is the surface's (facing down); else zero. The whole rise when its landblock is not loaded.
+    /// <paramref name="settle"/>: whether its cell has an opening overhead or objects (rising, its cell and ground must be found again).
     /// </summary>
     [SkipLocalsInit] // the stack buffer is written before it is read
-    public float Rise(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, float dz, out Vector3 normal)
+    public float Rise(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, float dz, out Vector3 normal, out bool settle)
     {
         normal = default;
+        settle = true;
         if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place))
         {
             return dz;
         }
+
+        settle = place.CellIndex >= 0 && place.Entry.Cells[place.CellIndex] is { } cell && (cell.HasOpeningAbove || cell.Objects.Length > 0);
 
         float top = position.Z + body.Height;
         var rise = new BodyRise(place.Local, body.Radius, top);

@@ -10,6 +10,12 @@ namespace AcDream.Core.Physics;
 internal static class Supports
 {
     /// <summary>
+    /// The steepest a floor rises per metre seen from above: tan of the walkable limit (normal Z ≥ <see cref="PhysicsConstants.FloorZ"/>),
+    /// 1.1256, rounded up. A floor's plane under a centre up to the reach past its lowest edge is at most this times the reach below it.
+    /// </summary>
+    private const float MaxFloorSlope = 1.126f;
+
+    /// <summary>
     /// The highest floor within <paramref name="reach"/> of <paramref name="p"/> (landblock-local to <paramref name="place"/>)
     /// whose Z under <paramref name="p"/> (<see cref="FloorTriangle.UnderCentre"/>) is between <paramref name="low"/> and <paramref name="high"/>: indoors, the
     /// floors of the place's cell, of cell <paramref name="alsoCell"/> (the move's start, when another; −1: none) and, with
@@ -55,8 +61,9 @@ internal static class Supports
                 // The other cells of its building whose floors reach the box: at a doorway or over an opening's edge the
                 // floor beyond holds the body too, whichever cell its centre was found in.
                 int group = entry.CellGroups[place.CellIndex];
-                for (int c = 0; c < entry.Cells.Length; c++)
+                for (BoxGrid.Cursor near = entry.CellWalls is BoxGrid cells ? cells.Near(lo, hi) : default; near.MoveNext();)
                 {
+                    int c = near.Current;
                     CellSurface other = entry.Cells[c];
                     if (c != place.CellIndex && c != alsoCell && entry.CellGroups[c] == group
                         && other.FloorMin.X <= hi.X && other.FloorMax.X >= lo.X && other.FloorMin.Y <= hi.Y && other.FloorMax.Y >= lo.Y)
@@ -84,10 +91,17 @@ internal static class Supports
         where T : struct, IFloorScan
     {
         CellSurface cell = entry.Cells[index];
-        scan.Scan(cell.Floors, Vector2.Zero, SurfaceKind.CellFloor, cell.CellId, index);
+        if (scan.Spans(cell.FloorZMin, cell.FloorZMax))
+        {
+            scan.Scan(cell.Floors, Vector2.Zero, SurfaceKind.CellFloor, cell.CellId, index);
+        }
+
         foreach (ObjectSurface o in cell.Objects)
         {
-            scan.Scan(o.Floors, Vector2.Zero, SurfaceKind.ObjectFloor, o.ObjectId, index);
+            if (scan.Spans(o.BoundsMin.Z, o.BoundsMax.Z))
+            {
+                scan.Scan(o.Floors, Vector2.Zero, SurfaceKind.ObjectFloor, o.ObjectId, index);
+            }
         }
     }
 
@@ -127,6 +141,9 @@ internal static class Supports
     /// <summary>What is done with each floor near the body (its triangles in a frame <c>offset</c> from the body's).</summary>
     private interface IFloorScan
     {
+        /// <summary>Whether floors between the two heights may matter (a whole cell's or object's are skipped when not).</summary>
+        bool Spans(float zMin, float zMax);
+
         void Scan(ReadOnlySpan<FloorTriangle> floors, Vector2 offset, SurfaceKind kind, uint id, int cellIndex);
     }
 
@@ -139,13 +156,15 @@ internal static class Supports
         public float Low;
         public float High;
 
+        public readonly bool Spans(float zMin, float zMax) => zMax >= Low && zMin - (Reach * MaxFloorSlope) <= High && zMax > Best.Z;
+
         public void Scan(ReadOnlySpan<FloorTriangle> floors, Vector2 offset, SurfaceKind kind, uint id, int cellIndex)
         {
             Vector2 p = P - offset;
             float reach2 = Reach * Reach;
             foreach (ref readonly FloorTriangle t in floors)
             {
-                if (t.ZMax < Low || t.ZMin > High || t.ZMax <= Best.Z
+                if (t.ZMax < Low || t.ZMin - (Reach * MaxFloorSlope) > High || t.ZMax <= Best.Z
                     || p.X < t.Min.X - Reach || p.Y < t.Min.Y - Reach || p.X > t.Max.X + Reach || p.Y > t.Max.Y + Reach)
                 {
                     continue;
@@ -171,6 +190,8 @@ internal static class Supports
         public float Distance;
         public Vector2 Nearest;
         public SurfaceContact Floor;
+
+        public readonly bool Spans(float zMin, float zMax) => zMax >= Level - PhysicsConstants.GroundTolerance && zMin - (Reach * MaxFloorSlope) <= Level + PhysicsConstants.GroundTolerance;
 
         public void Scan(ReadOnlySpan<FloorTriangle> floors, Vector2 offset, SurfaceKind kind, uint id, int cellIndex)
         {

@@ -66,6 +66,13 @@ internal ref struct MoveQuery
     public bool ObjectStep;
 
     /// <summary>
+    /// Set by the body's planner when nothing lies near the body's move: outdoors no cell's or object's wall and no object's
+    /// floor past its walls in the box it sweeps (in its landblock and across seams), indoors an open floor in a cell whose
+    /// floors are all at one height, with no object in it. Footing then has nothing to find beyond the ground under the centre.
+    /// </summary>
+    public bool Open;
+
+    /// <summary>
     /// Where the wall a refusal or slide met is recorded (<see cref="Meet(SurfaceKind, uint)"/>), when the caller asked what the move
     /// met; a null reference otherwise, and then nothing is written.
     /// </summary>

@@ -76,6 +76,8 @@ internal sealed class LandblockEntry
 
         Objects = BoxGrid.Fixed(objectBoxes, ObjectGridSide, ObjectGridSize);
         ObjectBoxes = Array.ConvertAll(outdoorObjects, static o => new ObjectBox(o));
+        FloorsBeyondWalls = Array.Exists(ObjectBoxes, static b => b.FloorMin.X <= b.FloorMax.X
+            && (b.FloorMin.X < b.WallMin.X || b.FloorMin.Y < b.WallMin.Y || b.FloorMax.X > b.WallMax.X || b.FloorMax.Y > b.WallMax.Y));
         ObjectCells = outdoorObjects.Length == 0 ? 0 : ObjectCellMask(Objects);
         (OutdoorMin, OutdoorMax) = (min, max);
     }
@@ -131,6 +133,12 @@ internal sealed class LandblockEntry
 
     /// <summary>The boxes of <see cref="OutdoorObjects"/>, by the same index, in one array: a move's tests read them, not the objects.</summary>
     public ObjectBox[] ObjectBoxes { get; }
+
+    /// <summary>
+    /// Whether an outdoor object's floors reach past its walls' bounds (a slab, a tread beyond its sides): where no
+    /// wall is near a body, a floor of such an object may still be under its footprint (footing).
+    /// </summary>
+    public bool FloorsBeyondWalls { get; }
 
     /// <summary>
     /// The outdoor objects' fine grid (<see cref="ObjectGridSide"/>² squares of <see cref="ObjectGridSize"/> m
