@@ -59,7 +59,9 @@ internal static class DeterminismWalk
                     {
                         float heading = MathF.Atan2(target.Y - at.Position.Y, target.X - at.Position.X) + (float)((random.NextDouble() - 0.5) * 1.5);
                         float length = 0.05f + (float)(random.NextDouble() * (random.Next(6) == 0 ? 4 : 0.6));
-                        ResolveResult r = engine.Resolve(at.Position, at.CellId, new Vector3(MathF.Cos(heading) * length, MathF.Sin(heading) * length, 0f), 0.6f, options);
+                        // With vertical motion a jump now and then, and a fall by the delta while in the air.
+                        float dz = !options.Vertical ? 0f : !at.IsOnGround ? -0.3f : random.Next(8) == 0 ? 0.4f : 0f;
+                        ResolveResult r = engine.Resolve(at.Position, at.CellId, new Vector3(MathF.Cos(heading) * length, MathF.Sin(heading) * length, dz), 0.6f, options);
                         hash = Mix(hash, r);
                         answers++;
                         slid += r.Outcome == ResolveOutcome.Slid ? 1 : 0;
@@ -72,7 +74,7 @@ internal static class DeterminismWalk
                         bool found = engine.TryGetGround(r.Position, r.CellId, 0.6f, out float ground, out Vector3 normal, out uint objectId);
                         hash = Mix(Mix(hash, BitConverter.SingleToUInt32Bits(ground)), BitConverter.SingleToUInt32Bits(normal.X) ^ BitConverter.SingleToUInt32Bits(normal.Y) ^ objectId);
                         onObjects += found && objectId != 0 && r.IsOnGround ? 1 : 0;
-                        at = r.IsOnGround || !found ? r : r with { Position = r.Position with { Z = ground } };
+                        at = r.IsOnGround || !found || options.Vertical ? r : r with { Position = r.Position with { Z = ground } };
                     }
                 }
             }

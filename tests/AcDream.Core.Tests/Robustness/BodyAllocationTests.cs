@@ -84,6 +84,9 @@ public class BodyAllocationTests(ITestOutputHelper output)
             // The same with what each move met (the report overload).
             ("real Holtburg cells, with the report", i => Reported(holtburg, floors[(i * 7919) % floors.Count], i), []),
             ("indoor slide along a wall, with the report", i => room.Resolve(corner + new Vector3(9.4f, 2f + (i % 50 * 0.1f), 0), roomCell, new Vector3(0.3f, 0.2f, 0), Step, BodyAlone, out _), [ResolveOutcome.Slid]),
+
+            // The body in the air (vertical motion): rising and falling in the real cells, 0.5 m over their floors.
+            ("real Holtburg cells, in the air", i => Air(holtburg, floors[(i * 7919) % floors.Count], i), []),
         };
 
         foreach ((string name, Func<int, ResolveResult> call, ResolveOutcome[] expected) in scenarios)
@@ -115,6 +118,13 @@ public class BodyAllocationTests(ITestOutputHelper output)
             output.WriteLine($"{name}: {string.Join(", ", passes)} B over {Calls} resolves per pass; outcomes {string.Join(", ", outcomes.Select(kv => $"{kv.Key} {kv.Value}"))} (sink {sink})");
             passes.Min().Should().Be(0, $"{Calls} body resolves ({name}) allocated {string.Join(", ", passes)} bytes in successive passes");
         }
+    }
+
+    private static ResolveResult Air(PhysicsEngine engine, (Vector3 Position, uint Cell) start, int i)
+    {
+        float angle = i % 8 * MathF.PI / 4f, length = 0.1f + (i % 4 * 0.1f);
+        float dz = i % 3 == 0 ? 0.3f : -0.4f * (i % 3);
+        return engine.Resolve(start.Position + new Vector3(0f, 0f, 0.5f), start.Cell, new Vector3(length * MathF.Cos(angle), length * MathF.Sin(angle), dz), Step, MovementOptions.Player);
     }
 
     private static ResolveResult Real(PhysicsEngine engine, (Vector3 Position, uint Cell) start, int i)
