@@ -24,6 +24,7 @@ internal static class AccuracyReport
         DoorsOnly(o);
         BodyAccuracy.Run(o);
         ObjectAccuracy.Run(o);
+        VerticalAccuracy.Run(o);
     }
 
     private static string F(double v, string format = "0.###") => v.ToString(format, Inv);
@@ -447,11 +448,12 @@ internal static class AccuracyReport
         uint cell = course.StartCell;
         var delta = new Vector3(course.Direction * step, 0f);
         MovementOptions falling = options.StepDownHeight is null ? options : options with { StepDownHeight = 0f };
+        bool vertical = options.Vertical && options.Body.HasValue; // the engine moves the body down by the delta's Z
         float fallSpeed = 0f;
         for (int f = 0; f < frames; f++)
         {
-            MovementOptions now = fallSpeed > 0f ? falling : options;
-            ResolveResult r = engine.Resolve(pos, cell, delta, World.PlayerStepUp, in now);
+            MovementOptions now = fallSpeed > 0f && !vertical ? falling : options;
+            ResolveResult r = engine.Resolve(pos, cell, vertical ? delta with { Z = -fallSpeed / CourseHz } : delta, World.PlayerStepUp, in now);
             pos = r.Position;
             cell = r.CellId;
 
@@ -459,7 +461,7 @@ internal static class AccuracyReport
             if (options.StepDownHeight is not null && !r.IsOnGround)
             {
                 fallSpeed += Gravity / CourseHz;
-                pos.Z -= fallSpeed / CourseHz;
+                pos.Z -= vertical ? 0f : fallSpeed / CourseHz;
             }
             else
             {
