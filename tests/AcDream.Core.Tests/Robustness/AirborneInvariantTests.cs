@@ -17,6 +17,8 @@ public class AirborneInvariantTests(ITestOutputHelper output)
     [Theory]
     [InlineData("centred", 1)]
     [InlineData("global", 2)]
+    [InlineData("centred", 8)]
+    [InlineData("centred", 10)]
     public void Jumps_and_falls_give_fixed_points_with_honest_ground(string frame, int seed)
     {
         var engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(TestData.Holtburg);

@@ -24,12 +24,14 @@ public class AnswerInvariantTests
     {
         { 11, "literal" }, { 11, "step down" }, { 11, "player" },
         { 12, "literal" }, { 12, "step down" }, { 12, "player" },
+        { 102, "footing" }, { 106, "footing" }, // footing on stepped floors, raised on from tread to tread
     };
 
     private static MovementOptions Options(string name) => name switch
     {
         "literal" => MovementOptions.Literal,
         "step down" => new MovementOptions { StepDownHeight = 0.75f },
+        "footing" => MovementOptions.Player with { Vertical = false },
         _ => MovementOptions.Player,
     };
 

@@ -66,7 +66,6 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
     /// under the first surface over the body (<see cref="ResolveOutcome.Ceiling"/>); a fall lands on the first floor
     /// under it, and the rest of the move is walked on the ground.
     /// </summary>
-    [SkipLocalsInit]
     private ResolveResult Air(ref MoveQuery q, float dz)
     {
         MovementOptions air = q.Options with { StepDownHeight = 0f };
@@ -106,9 +105,9 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
             {
                 float rise = planner.Rise(ref move, at.Position, at.CellId, q.Options.Body!.Value, up, out Vector3 ceiling, out bool settle);
                 Vector3 risen = at.Position with { Z = at.Position.Z + rise };
-                at = settle || !move.Open || rise == 0f
+                at = settle || rise == 0f || FloorAt(ref move, risen, at.CellId, step)
                     ? Settle(ref move, risen, at.CellId, in air)
-                    : new ResolveResult(risen, at.CellId, false); // nothing near, no opening overhead: where it rose to is the answer of resting there
+                    : new ResolveResult(risen, at.CellId, false); // no floor at its feet, no opening overhead: where it rose to is the answer of resting there
                 if (rise < up)
                 {
                     (outcome, normal, up) = (ResolveOutcome.Ceiling, ceiling, 0f);
@@ -130,6 +129,30 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
         return at with { Outcome = outcome, SurfaceNormal = normal };
     }
 
+    /// <summary>
+    /// Whether a floor (its cell's, its building's cells', an object's; under its centre or, with footing, its footprint) lies
+    /// from the ground tolerance below feet at <paramref name="position"/> to <paramref name="step"/> above them, or, indoors, its
+    /// cell's floor nearest its feet is not below them, or there is none under its centre: then a body coming to rest there
+    /// may stand or be in another cell, so where it rose to must be settled. (Its cell has no opening and no object: the
+    /// caller checked.)
+    /// </summary>
+    private bool FloorAt(ref MoveQuery q, Vector3 position, uint cellId, float step)
+    {
+        const float tolerance = PhysicsConstants.GroundTolerance;
+        if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place)
+            || (place.CellIndex >= 0
+                ? !(place.Entry.Cells[place.CellIndex].TrySampleFloor(place.Local.X, place.Local.Y, position.Z, out float floor) && floor < position.Z - tolerance)
+                : place.Entry.Terrain.SampleZUnchecked(place.Local.X, place.Local.Y) >= position.Z - tolerance))
+        {
+            // Indoors over no floor of its cell (its neighbours' floors decide its cell), or under the one nearest its feet (a
+            // body at rest below its cell's floor is put on it); outdoors at the terrain (a rise of less than the tolerance): settle.
+            return true;
+        }
+
+        float reach = q.Options.Footing ? q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach : 0f;
+        return Supports.Highest(ref q.Lands, in place, -1, place.Local, reach, position.Z - tolerance, position.Z + step, building: true).Found;
+    }
+
     /// <summary>The body at rest at <paramref name="position"/> in the air: not moving, not stepping down, its cell and footing found there.</summary>
     private ResolveResult Settle(ref MoveQuery q, Vector3 position, uint cellId, in MovementOptions air)
     {
@@ -146,9 +169,11 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
     /// </summary>
     private ResolveResult Foot(ref MoveQuery q, ResolveResult result)
     {
-        if (!q.Options.Footing || result.Outcome == ResolveOutcome.Held || (q.Open && (result.IsOnGround || !CellIds.IsIndoor(result.CellId))))
+        bool indoor = CellIds.IsIndoor(result.CellId);
+        if (!q.Options.Footing || result.Outcome == ResolveOutcome.Held
+            || (q.Open && (indoor ? result.IsOnGround && result.CellId == q.CellId : !CellIds.IsIndoor(q.CellId))))
         {
-            return result; // (nothing near the move: the ground under the centre is all there is)
+            return result; // (nothing near the move where it stayed: the ground under the centre is all there is)
         }
 
         float reach = q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach;
@@ -170,6 +195,7 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
             float low = result.IsOnGround ? z + PhysicsConstants.GroundTolerance : z - (q.Options.StepDownHeight ?? 0f) - PhysicsConstants.GroundTolerance;
             int start = CellIds.IsIndoor(q.CellId) && CellIds.IsIndoor(result.CellId) && (q.CellId >> 16) == (result.CellId >> 16)
                 && place.Entry.TryGetCellIndex(q.CellId, out int index) ? index : -1;
+
             // In the air, the floors of the other cells of its building too: a body over the edge of an opening or a doorway's
             // threshold is held by the floor beyond it, whichever cell its centre was found in.
             Support support = Supports.Highest(ref q.Lands, in place, start, place.Local, reach, low, MathF.Max(feet, z) + q.StepUp, !result.IsOnGround);
@@ -180,16 +206,16 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
 
             uint cellId = support.CellIndex >= 0 ? place.Entry.Cells[support.CellIndex].CellId : result.CellId;
             result = result with { Position = result.Position with { Z = support.Z }, CellId = cellId, IsOnGround = true };
+            feet = support.Z;
 
-            // At rest from there: the ground under the centre for feet at that height may be higher still.
+            // On from there: the ground under the centre for feet at that height may be higher still, and so may a floor
+            // within a step of it (the next tread).
             MoveQuery still = q.With(result.Position, result.CellId, Vector2.Zero, q.StepUp, in q.Options);
             ResolveResult settled = Horizontal(ref still);
-            if (!(settled.IsOnGround && settled.Position.Z > support.Z))
+            if (settled.IsOnGround && settled.Position.Z > support.Z)
             {
-                return result;
+                (result, feet) = (settled with { Outcome = result.Outcome, SurfaceNormal = result.SurfaceNormal }, settled.Position.Z);
             }
-
-            (result, feet) = (settled with { Outcome = result.Outcome, SurfaceNormal = result.SurfaceNormal }, support.Z);
         }
 
         return result;
