@@ -88,7 +88,6 @@ public sealed partial class CellSurface
         _floors = BuildFloors(physics);
         (Portals, _portalShapes) = BuildPortals(cell, cellId, envCell, cellStruct, transform);
         HasOpeningAbove = Array.Exists(_portalShapes, static p => p.Kind == PortalKind.Horizontal && p.OutNormal.Z > 0f);
-        HasOpening = Array.Exists(_portalShapes, static p => p.Kind == PortalKind.Horizontal);
         FloorLevel = _floors.Length > 0 && Array.TrueForAll(_floors, f => f.ZMin == _floors[0].ZMin && f.ZMax == _floors[0].ZMin) ? _floors[0].ZMin : float.NaN;
         (FloorZMin, FloorZMax) = _floors.Length == 0 ? (float.MaxValue, float.MinValue) : (_floors.Min(f => f.ZMin), _floors.Max(f => f.ZMax));
         Walls = CellWalls.Build(cell, physics, _portalShapes, [], nameof(cellStruct));
@@ -105,7 +104,6 @@ public sealed partial class CellSurface
         _floors = cell._floors;
         _portalShapes = cell._portalShapes;
         HasOpeningAbove = cell.HasOpeningAbove;
-        HasOpening = cell.HasOpening;
         FloorLevel = cell.FloorLevel;
         (FloorZMin, FloorZMax) = (cell.FloorZMin, cell.FloorZMax);
         _grid = cell._grid;
@@ -186,9 +184,6 @@ public sealed partial class CellSurface
 
     /// <summary>Whether one of the cell's portals is an opening in its ceiling (a horizontal portal leading up).</summary>
     internal bool HasOpeningAbove { get; }
-
-    /// <summary>Whether the cell has an opening in its floor or ceiling (a horizontal portal).</summary>
-    internal bool HasOpening { get; }
 
     /// <summary>The Z of the cell's floors when they are all level at one height (landblock-local metres); NaN when they are not, or there are none.</summary>
     internal float FloorLevel { get; }

@@ -61,9 +61,9 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
     private ResolveResult Walk(ref MoveQuery q) => Foot(ref q, Horizontal(ref q));
 
     /// <summary>
-    /// A move through the air: in equal sub-steps no longer than the sweep (when the options sweep), each across
-    /// (not stepping down, climbing at most <see cref="PhysicsConstants.AirStepUp"/>) then up or down. A rise stops
-    /// under the first surface over the body (<see cref="ResolveOutcome.Ceiling"/>); a fall lands on the first floor
+    /// A move through the air: in equal sub-steps no longer than the sweep (when the options sweep), each up then across,
+    /// or across and down (never stepping down across, climbing at most <see cref="PhysicsConstants.AirStepUp"/>). A rise
+    /// stops under the first surface over the body (<see cref="ResolveOutcome.Ceiling"/>); a fall lands on the first floor
     /// under it, and the rest of the move is walked on the ground.
     /// </summary>
     private ResolveResult Air(ref MoveQuery q, float dz)
@@ -81,6 +81,19 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
         bool landed = false;
         for (int k = 0; k < steps; k++)
         {
+            // Rising, the body first rises (its top stopped under the first surface over it), then moves across from there:
+            // the move across is what resting there gives, its cell and ground found at its new height.
+            if (up > 0f && !landed)
+            {
+                var rising = q.With(at.Position, at.CellId, Vector2.Zero, step, in air);
+                float rise = planner.Rise(ref rising, at.Position, at.CellId, q.Options.Body!.Value, up, out Vector3 ceiling);
+                at = at with { Position = at.Position with { Z = at.Position.Z + rise } };
+                if (rise < up)
+                {
+                    (outcome, normal, up) = (ResolveOutcome.Ceiling, ceiling, 0f);
+                }
+            }
+
             // Falling, the move across steps down as far as this sub-step falls: it lands on the ground under its end
             // within that depth (or under its footprint), else it is that much lower, over the cell whose surface is below.
             // (Two ground tolerances more: lowered by the fall, feet that close to the ground would be standing on it.)
@@ -101,19 +114,7 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
                 continue;
             }
 
-            if (up > 0f)
-            {
-                float rise = planner.Rise(ref move, at.Position, at.CellId, q.Options.Body!.Value, up, out Vector3 ceiling, out bool settle);
-                Vector3 risen = at.Position with { Z = at.Position.Z + rise };
-                at = settle || rise == 0f || FloorAt(ref move, risen, at.CellId, step)
-                    ? Settle(ref move, risen, at.CellId, in air)
-                    : new ResolveResult(risen, at.CellId, false); // no floor at its feet, no opening overhead: where it rose to is the answer of resting there
-                if (rise < up)
-                {
-                    (outcome, normal, up) = (ResolveOutcome.Ceiling, ceiling, 0f);
-                }
-            }
-            else if (up < 0f && at.Outcome != ResolveOutcome.Held)
+            if (up < 0f && at.Outcome != ResolveOutcome.Held)
             {
                 at = at with { Position = at.Position with { Z = at.Position.Z + up } };
             }
@@ -127,37 +128,6 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
         }
 
         return at with { Outcome = outcome, SurfaceNormal = normal };
-    }
-
-    /// <summary>
-    /// Whether a floor (its cell's, its building's cells', an object's; under its centre or, with footing, its footprint) lies
-    /// from the ground tolerance below feet at <paramref name="position"/> to <paramref name="step"/> above them, or, indoors, its
-    /// cell's floor nearest its feet is not below them, or there is none under its centre: then a body coming to rest there
-    /// may stand or be in another cell, so where it rose to must be settled. (Its cell has no opening and no object: the
-    /// caller checked.)
-    /// </summary>
-    private bool FloorAt(ref MoveQuery q, Vector3 position, uint cellId, float step)
-    {
-        const float tolerance = PhysicsConstants.GroundTolerance;
-        if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place)
-            || (place.CellIndex >= 0
-                ? !(place.Entry.Cells[place.CellIndex].TrySampleFloor(place.Local.X, place.Local.Y, position.Z, out float floor) && floor < position.Z - tolerance)
-                : place.Entry.Terrain.SampleZUnchecked(place.Local.X, place.Local.Y) >= position.Z - tolerance))
-        {
-            // Indoors over no floor of its cell (its neighbours' floors decide its cell), or under the one nearest its feet (a
-            // body at rest below its cell's floor is put on it); outdoors at the terrain (a rise of less than the tolerance): settle.
-            return true;
-        }
-
-        float reach = q.Options.Footing ? q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach : 0f;
-        return Supports.Highest(ref q.Lands, in place, -1, place.Local, reach, position.Z - tolerance, position.Z + step, building: true).Found;
-    }
-
-    /// <summary>The body at rest at <paramref name="position"/> in the air: not moving, not stepping down, its cell and footing found there.</summary>
-    private ResolveResult Settle(ref MoveQuery q, Vector3 position, uint cellId, in MovementOptions air)
-    {
-        MoveQuery still = q.With(position, cellId, Vector2.Zero, q.StepUp, in air);
-        return Walk(ref still);
     }
 
     /// <summary>

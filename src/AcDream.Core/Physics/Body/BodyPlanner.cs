@@ -172,19 +172,15 @@ internal sealed class BodyPlanner(WorldFrame frame)
     /// disc (<see cref="Overhead"/>): a ceiling, a lintel, an upper floor, an object's underside, among the cells and
     /// objects around it (<see cref="WallSet"/>). Stopped, it keeps a gap of the body's skin under the surface, and
     /// <paramref name="normal"/> is the surface's (facing down); else zero. The whole rise when its landblock is not loaded.
-    /// <paramref name="settle"/>: whether its cell has a floor or ceiling opening or objects (rising, its cell and ground must be found again).
     /// </summary>
     [SkipLocalsInit] // the stack buffer is written before it is read
-    public float Rise(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, float dz, out Vector3 normal, out bool settle)
+    public float Rise(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, float dz, out Vector3 normal)
     {
         normal = default;
-        settle = true;
         if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place))
         {
             return dz;
         }
-
-        settle = place.CellIndex >= 0 && place.Entry.Cells[place.CellIndex] is { } cell && (cell.HasOpening || cell.Objects.Length > 0);
 
         float top = position.Z + body.Height;
         var rise = new BodyRise(place.Local, body.Radius, top);

@@ -76,8 +76,8 @@ internal sealed class LandblockEntry
 
         Objects = BoxGrid.Fixed(objectBoxes, ObjectGridSide, ObjectGridSize);
         ObjectBoxes = Array.ConvertAll(outdoorObjects, static o => new ObjectBox(o));
-        FloorsBeyondWalls = Array.Exists(ObjectBoxes, static b => b.FloorMin.X <= b.FloorMax.X
-            && (b.FloorMin.X < b.WallMin.X || b.FloorMin.Y < b.WallMin.Y || b.FloorMax.X > b.WallMax.X || b.FloorMax.Y > b.WallMax.Y));
+        FloorsBeyondWalls = Array.Exists(ObjectBoxes, static b => Beyond(b.FloorMin, b.FloorMax, b.WallMin, b.WallMax))
+            || Enumerable.Range(0, cells.Length).Any(i => MetOutdoors[i] && Beyond(cells[i].FloorMin, cells[i].FloorMax, CellWallBounds[i].Min, CellWallBounds[i].Max));
         ObjectCells = outdoorObjects.Length == 0 ? 0 : ObjectCellMask(Objects);
         (OutdoorMin, OutdoorMax) = (min, max);
     }
@@ -135,10 +135,14 @@ internal sealed class LandblockEntry
     public ObjectBox[] ObjectBoxes { get; }
 
     /// <summary>
-    /// Whether an outdoor object's floors reach past its walls' bounds (a slab, a tread beyond its sides): where no
-    /// wall is near a body, a floor of such an object may still be under its footprint (footing).
+    /// Whether an outdoor object's floors, or those of a cell a body outdoors meets, reach past their walls' bounds (a slab,
+    /// a tread beyond its sides): where no wall is near a body, such a floor may still be under its footprint (footing).
     /// </summary>
     public bool FloorsBeyondWalls { get; }
+
+    /// <summary>Whether floor bounds <paramref name="floorMin"/>–<paramref name="floorMax"/> (not empty) reach past wall bounds <paramref name="wallMin"/>–<paramref name="wallMax"/>.</summary>
+    private static bool Beyond(Vector2 floorMin, Vector2 floorMax, Vector2 wallMin, Vector2 wallMax) =>
+        floorMin.X <= floorMax.X && (floorMin.X < wallMin.X || floorMin.Y < wallMin.Y || floorMax.X > wallMax.X || floorMax.Y > wallMax.Y);
 
     /// <summary>
     /// The outdoor objects' fine grid (<see cref="ObjectGridSide"/>² squares of <see cref="ObjectGridSize"/> m
