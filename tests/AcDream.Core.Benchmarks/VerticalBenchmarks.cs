@@ -117,15 +117,7 @@ public class VerticalOutdoorBenchmarks : VerticalBenchmarks
     public void Setup()
     {
         var random = new Random(5);
-        float[] table = World.NonLinearTable();
-        Engine = new PhysicsEngine(World.Holtburg);
-        TerrainSurface centre = null!;
-        foreach (uint id in World.Landblocks(9))
-        {
-            var terrain = new TerrainSurface(World.RollingHeights(random, 60, 6), table, id);
-            Engine.AddLandblock(id, terrain, World.Buildings(id, terrain, 64));
-            centre ??= terrain;
-        }
+        Engine = World.OpenGround(random, out TerrainSurface centre);
 
         for (int i = 0; i < Moves; i++)
         {

@@ -93,6 +93,25 @@ internal static class World
         return cells;
     }
 
+    /// <summary>
+    /// Open ground: 9 landblocks of rolling terrain (index 60 ± 6 of the non-linear table) with 64 <see cref="Buildings"/> in
+    /// each, centred on Holtburg; returns the centre's terrain. Movers in its west half meet no wall.
+    /// </summary>
+    public static PhysicsEngine OpenGround(Random random, out TerrainSurface centre)
+    {
+        float[] table = NonLinearTable();
+        var engine = new PhysicsEngine(Holtburg);
+        centre = null!;
+        foreach (uint id in Landblocks(9))
+        {
+            var terrain = new TerrainSurface(RollingHeights(random, 60, 6), table, id);
+            engine.AddLandblock(id, terrain, Buildings(id, terrain, 64));
+            centre ??= terrain;
+        }
+
+        return engine;
+    }
+
     /// <summary>A one-room cell: floor [0, size]², walls 3 m high, a 1 m doorway to the outdoors centred in the south wall.</summary>
     public static CellBuilder Room(uint cellId, Vector3 origin, Quaternion orientation, float size)
     {
