@@ -246,6 +246,50 @@ public class VerticalMotionTests(ITestOutputHelper output)
     }
 
     [Theory]
+    [MemberData(nameof(Frames))]
+    public void A_body_landing_on_a_face_too_steep_to_stand_on_slides_off_it(string frame)
+    {
+        // A 60° face (normal Z 0.5: above LandingZ, below FloorZ) 4 m wide, rising from 96 m at y 60 to 97.73 m at y 61,
+        // over terrain at 94 m. A body dropped over its middle lands on it (in the air: it cannot stand there), never
+        // passes it, slides down it and comes down on the terrain below its foot.
+        var engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(TestData.Holtburg);
+        float rise = MathF.Sqrt(3f);
+        GfxObj roof = ObjectKit.Gfx(0x01000104, new Vector3[] { new(-2, 0, 0), new(2, 0, 0), new(2, 1, rise), new(-2, 1, rise) });
+        List<ObjectSurface> objects = [new ObjectSurface(roof, ObjectKit.At(new Vector3(60f, 60f, 96f), 0f), 0)];
+        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), [], objects);
+        var at = new ResolveResult(engine.ToWorld(TestData.Holtburg, new Vector3(60f, 60.5f, 100f)), Outdoor, false);
+        float vz = 0f;
+        int onFace = 0;
+        for (int f = 0; f < 120 && (f == 0 || !at.IsOnGround); f++)
+        {
+            at = Fly(engine, at, ref vz, Vector2.Zero, Player, objects, $"{frame}, steep face, frame {f}");
+            Vector3 local = engine.ToLandblockLocal(TestData.Holtburg, at.Position);
+
+            // The face's highest point under the body's disc, in double: the feet never below it.
+            double top = Math.Min(61.0, local.Y + 0.48);
+            if (top >= 60.0 && Math.Abs(local.X - 60f) < 2f + 0.48f)
+            {
+                double face = 96.0 + (rise * (top - 60.0));
+                (local.Z - face).Should().BeGreaterThan(-1e-3, $"{frame}, frame {f}: never through the face ({face:R}): {at}");
+            }
+
+            if (at.Outcome == ResolveOutcome.Slid && at.SurfaceNormal.Z > 0.4f)
+            {
+                onFace++;
+                at.IsOnGround.Should().BeFalse($"{frame}, frame {f}: a face too steep is not stood on: {at}");
+                at.SurfaceNormal.Z.Should().BeApproximately(0.5f, 1e-3f, "the face's normal");
+                vz = MathF.Max(vz, -2f); // resting against the face, the fall it stopped went along it
+            }
+        }
+
+        onFace.Should().BeGreaterThan(2, $"{frame}: it landed on the face and slid: {at}");
+        at.IsOnGround.Should().BeTrue($"{frame}: down on the terrain: {at}");
+        Vector3 end = engine.ToLandblockLocal(TestData.Holtburg, at.Position);
+        end.Z.Should().Be(94f);
+        end.Y.Should().BeLessThan(60f - 0.4f, $"{frame}: off the face's foot: {at}");
+    }
+
+    [Theory]
     [InlineData(0.48f, "centred")]
     [InlineData(0.48f, "global")]
     [InlineData(0.3f, "centred")]

@@ -64,7 +64,9 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
     /// A move through the air: in equal sub-steps no longer than the sweep (when the options sweep), each up then across,
     /// or across and down (never stepping down across, climbing at most <see cref="PhysicsConstants.AirStepUp"/>). A rise
     /// stops under the first surface over the body (<see cref="ResolveOutcome.Ceiling"/>); a fall lands on the first floor
-    /// under it, and the rest of the move is walked on the ground.
+    /// under it, and the rest of the move is walked on the ground; a face too steep to stand on (above
+    /// <see cref="PhysicsConstants.LandingZ"/>) stops the fall and the body slides down it (<see cref="ResolveOutcome.Slid"/>
+    /// with its normal).
     /// </summary>
     private ResolveResult Air(ref MoveQuery q, float dz)
     {
@@ -101,6 +103,7 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
             MoveQuery move = landed
                 ? q.With(at.Position, at.CellId, across, q.StepUp, in q.Options)
                 : q.With(at.Position, at.CellId, across, step, in fall);
+            float before = at.Position.Z;
             ResolveResult moved = Walk(ref move);
             if (moved.IsRefused || moved.Outcome == ResolveOutcome.Slid)
             {
@@ -108,15 +111,38 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
             }
 
             at = moved;
-            if (landed || (at.IsOnGround && up <= 0f))
+            if (landed || (at.IsOnGround && up == 0f))
             {
-                landed = true;
+                landed |= at.IsOnGround;
                 continue;
             }
 
             if (up < 0f && at.Outcome != ResolveOutcome.Held)
             {
-                at = at with { Position = at.Position with { Z = at.Position.Z + up } };
+                // A face too steep to stand on between where the feet were and where they land or fall to comes first.
+                float depth = at.IsOnGround ? before - at.Position.Z : -up;
+                Vector3 slope = default;
+                float face = depth > 0f
+                    ? planner.SteepUnder(ref move, at.Position with { Z = before }, at.CellId, q.Options.Body!.Value, depth, out slope)
+                    : float.NaN;
+                if (float.IsNaN(face) || (at.IsOnGround && !(face > at.Position.Z + PhysicsConstants.GroundTolerance)))
+                {
+                    (at, landed) = at.IsOnGround ? (at, true) : (at with { Position = at.Position with { Z = before + up } }, false);
+                    continue;
+                }
+
+                // A face too steep to stand on stops the fall at its highest point under the body (in the air, not standing);
+                // the part of the fall it stopped goes on along the face, down it: the body slides off.
+                float stopped = face - (before + up);
+                var downhill = new Vector2(slope.X, slope.Y) * (stopped * slope.Z);
+                at = at with { Position = at.Position with { Z = face }, IsOnGround = false };
+                (outcome, normal) = outcome == ResolveOutcome.Ceiling ? (outcome, normal) : (ResolveOutcome.Slid, slope);
+                if (downhill != Vector2.Zero)
+                {
+                    MoveQuery off = q.With(at.Position, at.CellId, downhill, step, in air);
+                    ResolveResult slid = Walk(ref off);
+                    at = slid.IsRefused ? at : slid;
+                }
             }
         }
 

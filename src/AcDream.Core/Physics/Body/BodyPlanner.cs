@@ -201,6 +201,37 @@ internal sealed class BodyPlanner(WorldFrame frame)
     }
 
     /// <summary>
+    /// Where a body of <paramref name="body"/> with its feet at <paramref name="position"/> (world; in <paramref name="cellId"/>)
+    /// falling <paramref name="depth"/> metres meets a face too steep to stand on but not to land on (<see cref="Overhead.Steep"/>):
+    /// the Z its feet rest at (the face's highest point over its disc), with the face's normal (up); NaN when it meets none.
+    /// </summary>
+    [SkipLocalsInit] // the stack buffer is written before it is read
+    public float SteepUnder(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, float depth, out Vector3 normal)
+    {
+        normal = default;
+        if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place)
+            || (!place.Entry.HasSteep && !q.Lands.ReachInto(place.Entry).Meets(place.Local - new Vector2(body.Radius), place.Local + new Vector2(body.Radius))))
+        {
+            return float.NaN; // no face a fall may land on in its landblock, nor one reaching it across a seam
+        }
+
+        var fall = new BodyRise(place.Local, body.Radius, position.Z);
+        var hit = new CeilingHit { Z = position.Z - depth };
+        Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
+        var reach = new Vector2(body.Radius + PhysicsConstants.ContactTolerance);
+        new WallSet(ref q.Lands, place.Entry, place.CellIndex, sources, new WallBox(place.Local - reach, place.Local + reach, position.Z - depth, position.Z))
+            .Steep(in fall, ref hit);
+        if (hit.Source.Kind == SurfaceKind.None)
+        {
+            return float.NaN;
+        }
+
+        q.Meet(hit.Source.Kind, hit.Source.Id);
+        normal = hit.Normal;
+        return hit.Z;
+    }
+
+    /// <summary>
     /// The gap the body keeps from walls beyond its radius: <see cref="PhysicsConstants.BodySkin"/>
     /// plus twice the float spacing of the coordinates it may reach, in the world frame and the
     /// landblock's, so rounding the answer to the world frame never puts the body into a wall.

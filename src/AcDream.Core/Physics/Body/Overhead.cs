@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 
 namespace AcDream.Core.Physics;
@@ -77,6 +78,48 @@ internal static class Overhead
             if (LowestOver(corners, c, r, out float z, out _))
             {
                 Keep(z, -t.Normal, rise.Top, ref hit);
+            }
+        }
+    }
+
+    /// <summary>
+    /// Raises <paramref name="hit"/> to the highest point over the disc of <paramref name="fall"/> (its centre and radius; its
+    /// band from <see cref="BodyRise.Top"/> down to <c>hit.Z</c>) of the faces among <paramref name="walls"/> too steep to
+    /// stand on but not to land on (unit normal Z above <see cref="PhysicsConstants.LandingZ"/>, below <see cref="PhysicsConstants.FloorZ"/>,
+    /// facing up): what a falling body's feet meet on a steep roof or slope. <c>hit.Normal</c>: the face's, up.
+    /// </summary>
+    [SkipLocalsInit] // the buffer is written before it is read
+    public static void Steep(CellWalls walls, Vector2 offset, in BodyRise fall, ref CeilingHit hit)
+    {
+        Vector2 c = fall.Centre - offset;
+        var r = new Vector2(fall.Radius);
+        if (!walls.HasSteep || walls.Min.X > c.X + r.X || walls.Max.X < c.X - r.X || walls.Min.Y > c.Y + r.Y || walls.Max.Y < c.Y - r.Y || walls.ZMax <= hit.Z || walls.ZMin >= fall.Top)
+        {
+            return;
+        }
+
+        Vector128<float> query = WallExtent.Query(c - r, c + r);
+        ReadOnlySpan<WallExtent> extents = walls.Extents;
+        Span<Vector3> flipped = stackalloc Vector3[PhysicsConstants.MaxWallPolygonVertices];
+        for (int i = 0; i < extents.Length; i++)
+        {
+            ref readonly WallPolygon wall = ref walls.Polygons[i];
+            if (wall.IsUpright || !extents[i].Meets(query, hit.Z, fall.Top))
+            {
+                continue;
+            }
+
+            // The highest point over the disc: the lowest of the polygon turned upside down.
+            ReadOnlySpan<Vector3> v = walls.Vertices.AsSpan(wall.First, wall.Count);
+            for (int k = 0; k < v.Length; k++)
+            {
+                flipped[k] = v[k] with { Z = -v[k].Z };
+            }
+
+            if (LowestOver(flipped[..v.Length], c, fall.Radius, out float lowest, out Vector3 down) && -down.Z > PhysicsConstants.LandingZ && -down.Z < PhysicsConstants.FloorZ
+                && -lowest <= fall.Top && -lowest > hit.Z)
+            {
+                (hit.Z, hit.Normal, hit.Source) = (-lowest, new Vector3(down.X, down.Y, -down.Z), hit.Current);
             }
         }
     }

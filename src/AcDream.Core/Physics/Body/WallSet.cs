@@ -137,6 +137,27 @@ internal ref struct WallSet
         }
     }
 
+    /// <summary>
+    /// Raises <paramref name="hit"/> to the highest steep face (too steep to stand on, not to land on) over the disc of
+    /// <paramref name="fall"/> from its top (the feet) down to <c>hit.Z</c>, among the cells' and objects' walls around it
+    /// (<see cref="Overhead.Steep"/>).
+    /// </summary>
+    public readonly void Steep(in BodyRise fall, ref CeilingHit hit)
+    {
+        var riser = new Riser(ref _lands, _entry, in fall, ref hit, steep: true);
+        if (_count < 0)
+        {
+            var r = new Vector2(fall.Radius);
+            Collect(ref _lands, _entry, _cell, new WallBox(fall.Centre - r, fall.Centre + r, hit.Z, fall.Top), ref riser);
+            return;
+        }
+
+        for (int i = 0; i < _count; i++)
+        {
+            riser.Add(_listed[i]);
+        }
+    }
+
     /// <summary>The floors (seen from below) of <paramref name="entry"/>'s outdoor objects over the box whose walls do not reach it (those were listed with their walls).</summary>
     private static void FloorsOnly(LandblockEntry entry, Vector2 offset, Vector2 lo, Vector2 hi, in BodyRise rise, ref CeilingHit hit)
     {
@@ -319,8 +340,8 @@ internal ref struct WallSet
         }
     }
 
-    /// <summary>Reads each source's surfaces overhead for a rising body (a cell's walls and floors with its objects', or an outdoor object's).</summary>
-    private ref struct Riser(ref Neighbourhood lands, LandblockEntry entry, in BodyRise rise, ref CeilingHit hit) : ISourceSink
+    /// <summary>Reads each source's surfaces overhead for a rising body (a cell's walls and floors with its objects', or an outdoor object's); or, <c>steep</c>, the steep faces under a falling one.</summary>
+    private ref struct Riser(ref Neighbourhood lands, LandblockEntry entry, in BodyRise rise, ref CeilingHit hit, bool steep = false) : ISourceSink
     {
         private readonly ref Neighbourhood _lands = ref lands;
         private readonly ref readonly BodyRise _rise = ref rise;
@@ -339,8 +360,16 @@ internal ref struct WallSet
 
             CellSurface cell = of.Cells[index];
             _hit.Current = new WallSource(SurfaceKind.CellWall, cell.CellId);
-            Overhead.Walls(cell.Walls, offset, in _rise, ref _hit);
-            Overhead.Floors(cell.Floors, offset, in _rise, ref _hit);
+            if (steep)
+            {
+                Overhead.Steep(cell.Walls, offset, in _rise, ref _hit);
+            }
+            else
+            {
+                Overhead.Walls(cell.Walls, offset, in _rise, ref _hit);
+                Overhead.Floors(cell.Floors, offset, in _rise, ref _hit);
+            }
+
             foreach (ObjectSurface o in cell.Objects)
             {
                 Read(o, offset);
@@ -352,6 +381,12 @@ internal ref struct WallSet
         private readonly void Read(ObjectSurface o, Vector2 offset)
         {
             _hit.Current = WallSource.Of(o);
+            if (steep)
+            {
+                Overhead.Steep(o.Walls, offset, in _rise, ref _hit);
+                return;
+            }
+
             Overhead.Walls(o.Walls, offset, in _rise, ref _hit);
             Overhead.Floors(o.Floors, offset, in _rise, ref _hit);
         }

@@ -49,10 +49,11 @@ internal sealed class CellWalls
     /// <summary>No walls.</summary>
     public static readonly CellWalls None = new([], []);
 
-    private CellWalls(WallPolygon[] polygons, Vector3[] vertices)
+    private CellWalls(WallPolygon[] polygons, Vector3[] vertices, bool steep = false)
     {
         Polygons = polygons;
         Vertices = vertices;
+        HasSteep = steep;
         Extents = new WallExtent[polygons.Length];
         for (int i = 0; i < polygons.Length; i++)
         {
@@ -81,6 +82,9 @@ internal sealed class CellWalls
     }
 
     public WallPolygon[] Polygons { get; }
+
+    /// <summary>Whether a wall is a face too steep to stand on but not to land on, facing up (unit normal Z between <see cref="PhysicsConstants.LandingZ"/> and <see cref="PhysicsConstants.FloorZ"/>): a fall may land on it.</summary>
+    public bool HasSteep { get; }
 
     public Vector3[] Vertices { get; }
 
@@ -114,6 +118,7 @@ internal sealed class CellWalls
     {
         var walls = new List<WallPolygon>();
         var vertices = new List<Vector3>();
+        bool steep = false;
         foreach ((ushort id, Vector3[] v, Vector3 normal) in polygons)
         {
             if (normal == Vector3.Zero || normal.Z >= PhysicsConstants.FloorZ || CoversPortal(v, portals))
@@ -138,6 +143,7 @@ internal sealed class CellWalls
                 max = Vector2.Max(max, new Vector2(p.X, p.Y));
             }
 
+            steep |= normal.Z > PhysicsConstants.LandingZ;
             (bool upright, Vector2 a, Vector2 b) = Upright(v, normal, zMin, zMax);
             walls.Add(new WallPolygon(vertices.Count, v.Length, zMin, zMax, min, max, upright, a, b));
             vertices.AddRange(v);
@@ -152,7 +158,7 @@ internal sealed class CellWalls
             }
         }
 
-        return walls.Count == 0 ? None : new CellWalls([.. walls], [.. vertices]);
+        return walls.Count == 0 ? None : new CellWalls([.. walls], [.. vertices], steep);
     }
 
     /// <summary>

@@ -76,6 +76,8 @@ internal sealed class LandblockEntry
 
         Objects = BoxGrid.Fixed(objectBoxes, ObjectGridSide, ObjectGridSize);
         ObjectBoxes = Array.ConvertAll(outdoorObjects, static o => new ObjectBox(o));
+        HasSteep = Array.Exists(cells, static c => c.Walls.HasSteep || Array.Exists(c.Objects, static o => o.Walls.HasSteep))
+            || Array.Exists(outdoorObjects, static o => o.Walls.HasSteep);
         FloorsBeyondWalls = Array.Exists(ObjectBoxes, static b => Beyond(b.FloorMin, b.FloorMax, b.WallMin, b.WallMax))
             || Enumerable.Range(0, cells.Length).Any(i => MetOutdoors[i] && Beyond(cells[i].FloorMin, cells[i].FloorMax, CellWallBounds[i].Min, CellWallBounds[i].Max));
         ObjectCells = outdoorObjects.Length == 0 ? 0 : ObjectCellMask(Objects);
@@ -133,6 +135,9 @@ internal sealed class LandblockEntry
 
     /// <summary>The boxes of <see cref="OutdoorObjects"/>, by the same index, in one array: a move's tests read them, not the objects.</summary>
     public ObjectBox[] ObjectBoxes { get; }
+
+    /// <summary>Whether any wall of its cells and objects is a face a fall may land on (<see cref="CellWalls.HasSteep"/>).</summary>
+    public bool HasSteep { get; }
 
     /// <summary>
     /// Whether an outdoor object's floors, or those of a cell a body outdoors meets, reach past their walls' bounds (a slab,
