@@ -367,7 +367,10 @@ internal ref struct WallSet
             else
             {
                 Overhead.Walls(cell.Walls, offset, in _rise, ref _hit);
-                Overhead.Floors(cell.Floors, offset, in _rise, ref _hit);
+                if (cell.FloorZMax > _rise.Top)
+                {
+                    Overhead.Floors(cell.Floors, offset, in _rise, ref _hit); // (a cell's floors all below the head are no ceiling)
+                }
             }
 
             foreach (ObjectSurface o in cell.Objects)
@@ -388,7 +391,10 @@ internal ref struct WallSet
             }
 
             Overhead.Walls(o.Walls, offset, in _rise, ref _hit);
-            Overhead.Floors(o.Floors, offset, in _rise, ref _hit);
+            if (o.BoundsMax.Z > _rise.Top)
+            {
+                Overhead.Floors(o.Floors, offset, in _rise, ref _hit);
+            }
         }
     }
 }
