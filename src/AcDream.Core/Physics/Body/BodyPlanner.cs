@@ -183,6 +183,13 @@ internal sealed class BodyPlanner(WorldFrame frame)
         }
 
         float top = position.Z + body.Height;
+        var disc = new Vector2(body.Radius + PhysicsConstants.ContactTolerance);
+        if (place.CellIndex >= 0 && place.Entry.Cells[place.CellIndex] is { Objects.Length: 0, OpenFloor: OpenFloor open } cell
+            && cell.FloorZMax <= top && open.IsOpen(place.Local - disc, place.Local + disc, top - PhysicsConstants.ContactTolerance, top + dz, place.Local - disc, place.Local + disc))
+        {
+            return dz; // on open floor: no wall or ceiling of the cell over the disc in the rise, no floor of it overhead, no portal to another cell's
+        }
+
         var rise = new BodyRise(place.Local, body.Radius, top);
         var hit = new CeilingHit { Z = top + dz };
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
