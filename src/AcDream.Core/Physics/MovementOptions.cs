@@ -153,6 +153,9 @@ public readonly record struct MovementOptions
     /// <summary>Whether any effect of the body in three dimensions is on (vertical motion, footing, edge slide) with a body.</summary>
     internal bool InThreeD => _motion != 0 && _body.HasValue;
 
+    /// <summary>Whether vertical motion is on with a body (without one it is ignored).</summary>
+    internal bool MovesVertically => (_motion & Motion.Vertical) != 0 && _body.HasValue;
+
     /// <summary>The effects of the body in three dimensions, one bit each.</summary>
     [Flags]
     private enum Motion : byte

@@ -79,4 +79,27 @@ public class DefaultOptionsTests
 
         compared.Should().Be(3000);
     }
+
+    [Theory]
+    [InlineData("centred")]
+    [InlineData("global")]
+    public void Resolve_ThreeDimensionalEffectsWithoutABody_ChangeNothing(string frame)
+    {
+        // Vertical motion, footing and edge slide need a body: without one they are ignored, bit for bit, wherever the mover
+        // is: in the air over the cellars' floor openings, on stairs, on the terrain, with a Z in the delta.
+        PhysicsEngine engine = RealObjects.HoltburgWithCellarStairs(frame);
+        Vector3 origin = engine.GetLandblockOrigin(TestData.Holtburg);
+        uint[] cells = [.. HoltburgCells.Fixtures.Keys, 0xA9B40000u];
+        MovementOptions without = MovementOptions.Player with { Body = null, Vertical = false, Footing = false, EdgeSlide = false };
+        MovementOptions ignored = MovementOptions.Player with { Body = null };
+        var random = new Random(19);
+        for (int n = 0; n < 3000; n++)
+        {
+            var pos = origin + new Vector3(133f + (float)(random.NextDouble() * 30), -1f + (float)(random.NextDouble() * 15), 89f + (float)(random.NextDouble() * 8));
+            uint cell = cells[random.Next(cells.Length)];
+            var delta = new Vector3((float)(random.NextDouble() - 0.5), (float)(random.NextDouble() - 0.5), (float)((random.NextDouble() * 2) - 1));
+            ResolveResult expected = engine.Resolve(pos, cell, delta, 0.6f, without);
+            engine.Resolve(pos, cell, delta, 0.6f, ignored).Should().Be(expected, $"case {n}: {pos} in 0x{cell:X8} moving {delta}");
+        }
+    }
 }

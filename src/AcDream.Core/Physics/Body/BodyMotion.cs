@@ -44,7 +44,7 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a call without these effects pays nothing for it
     public ResolveResult Resolve(ref MoveQuery q, float dz)
     {
-        bool vertical = q.Options.Vertical;
+        bool vertical = q.Options.MovesVertically;
         if (vertical && (dz != 0f || !Stands(ref q)))
         {
             return Air(ref q, dz);

@@ -173,7 +173,6 @@ internal sealed class BodyPlanner(WorldFrame frame)
     /// objects around it (<see cref="WallSet"/>). Stopped, it keeps a gap of the body's skin under the surface, and
     /// <paramref name="normal"/> is the surface's (facing down); else zero. The whole rise when its landblock is not loaded.
     /// </summary>
-    [SkipLocalsInit] // the stack buffer is written before it is read
     public float Rise(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, float dz, out Vector3 normal)
     {
         normal = default;
@@ -183,19 +182,15 @@ internal sealed class BodyPlanner(WorldFrame frame)
         }
 
         float top = position.Z + body.Height;
-        var disc = new Vector2(body.Radius + PhysicsConstants.ContactTolerance);
+        var reach = new Vector2(body.Radius + PhysicsConstants.ContactTolerance);
         if (place.CellIndex >= 0 && place.Entry.Cells[place.CellIndex] is { Objects.Length: 0, OpenFloor: OpenFloor open } cell
-            && cell.FloorZMax <= top && open.IsOpen(place.Local - disc, place.Local + disc, top - PhysicsConstants.ContactTolerance, top + dz, place.Local - disc, place.Local + disc))
+            && cell.FloorZMax <= top && open.IsOpen(place.Local - reach, place.Local + reach, top - PhysicsConstants.ContactTolerance, top + dz, place.Local - reach, place.Local + reach))
         {
             return dz; // on open floor: no wall or ceiling of the cell over the disc in the rise, no floor of it overhead, no portal to another cell's
         }
 
-        var rise = new BodyRise(place.Local, body.Radius, top);
         var hit = new CeilingHit { Z = top + dz };
-        Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
-        var reach = new Vector2(body.Radius + PhysicsConstants.ContactTolerance);
-        new WallSet(ref q.Lands, place.Entry, place.CellIndex, sources, new WallBox(place.Local - reach, place.Local + reach, top - PhysicsConstants.ContactTolerance, top + dz))
-            .Rise(in rise, ref hit);
+        Around(ref q, in place, new BodyRise(place.Local, body.Radius, top), top - PhysicsConstants.ContactTolerance, top + dz, steep: false, ref hit);
         if (hit.Source.Kind == SurfaceKind.None)
         {
             return dz;
@@ -212,7 +207,6 @@ internal sealed class BodyPlanner(WorldFrame frame)
     /// falling <paramref name="depth"/> metres meets a face too steep to stand on but not to land on (<see cref="Overhead.Steep"/>):
     /// the Z its feet rest at (the face's highest point over its disc), with the face's normal (up); NaN when it meets none.
     /// </summary>
-    [SkipLocalsInit] // the stack buffer is written before it is read
     public float SteepUnder(ref MoveQuery q, Vector3 position, uint cellId, MoverBody body, float depth, out Vector3 normal)
     {
         normal = default;
@@ -222,20 +216,35 @@ internal sealed class BodyPlanner(WorldFrame frame)
             return float.NaN; // no face a fall may land on in its landblock, nor one reaching it across a seam
         }
 
-        var fall = new BodyRise(place.Local, body.Radius, position.Z);
         var hit = new CeilingHit { Z = position.Z - depth };
-        Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
-        var reach = new Vector2(body.Radius + PhysicsConstants.ContactTolerance);
-        new WallSet(ref q.Lands, place.Entry, place.CellIndex, sources, new WallBox(place.Local - reach, place.Local + reach, position.Z - depth, position.Z))
-            .Steep(in fall, ref hit);
+        Around(ref q, in place, new BodyRise(place.Local, body.Radius, position.Z), position.Z - depth, position.Z, steep: true, ref hit);
         if (hit.Source.Kind == SurfaceKind.None)
         {
             return float.NaN;
         }
 
-        q.Meet(hit.Source.Kind, hit.Source.Id);
         normal = hit.Normal;
         return hit.Z;
+    }
+
+    /// <summary>
+    /// The surfaces over (or, <paramref name="steep"/>, the steep faces under) the disc <paramref name="disc"/> in the band
+    /// <paramref name="zLow"/>–<paramref name="zHigh"/>, among the cells and objects around <paramref name="place"/>, into <paramref name="hit"/>.
+    /// </summary>
+    [SkipLocalsInit] // the stack buffer is written before it is read
+    private static void Around(ref MoveQuery q, in Place place, in BodyRise disc, float zLow, float zHigh, bool steep, ref CeilingHit hit)
+    {
+        Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
+        var reach = new Vector2(disc.Radius + PhysicsConstants.ContactTolerance);
+        var walls = new WallSet(ref q.Lands, place.Entry, place.CellIndex, sources, new WallBox(place.Local - reach, place.Local + reach, zLow, zHigh));
+        if (steep)
+        {
+            walls.Steep(in disc, ref hit);
+        }
+        else
+        {
+            walls.Rise(in disc, ref hit);
+        }
     }
 
     /// <summary>

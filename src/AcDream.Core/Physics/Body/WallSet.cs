@@ -103,26 +103,15 @@ internal ref struct WallSet
 
     /// <summary>
     /// Lowers <paramref name="hit"/> to the lowest surface over the disc of <paramref name="rise"/> above its top: every
-    /// wall polygon, cylinder and floor (seen from below) of the listed cells and objects (<see cref="Overhead"/>).
+    /// wall polygon, cylinder and floor (seen from below) of the cells and objects around it (<see cref="Overhead"/>).
     /// </summary>
     public readonly void Rise(in BodyRise rise, ref CeilingHit hit)
     {
         var riser = new Riser(ref _lands, _entry, in rise, ref hit);
-        if (_count < 0)
-        {
-            var r = new Vector2(rise.Radius);
-            Collect(ref _lands, _entry, _cell, new WallBox(rise.Centre - r, rise.Centre + r, rise.Top, hit.Z), ref riser);
-            return;
-        }
-
-        for (int i = 0; i < _count; i++)
-        {
-            riser.Add(_listed[i]);
-        }
-
+        Read(ref riser, in rise, rise.Top, hit.Z);
         if (_cell < 0)
         {
-            // Outdoors, objects with floors and no wall there (a slab) were not listed: their undersides.
+            // Outdoors, objects with floors and no wall there (a slab) are not listed by their walls: their undersides.
             var r = new Vector2(rise.Radius);
             Vector2 lo = rise.Centre - r, hi = rise.Centre + r;
             FloorsOnly(_entry, Vector2.Zero, lo, hi, in rise, ref hit);
@@ -145,10 +134,16 @@ internal ref struct WallSet
     public readonly void Steep(in BodyRise fall, ref CeilingHit hit)
     {
         var riser = new Riser(ref _lands, _entry, in fall, ref hit, steep: true);
+        Read(ref riser, in fall, hit.Z, fall.Top);
+    }
+
+    /// <summary>Hands <paramref name="riser"/> the listed sources, or, where more stand near than the list holds, those the grids give over the disc and band <paramref name="zLow"/>–<paramref name="zHigh"/>.</summary>
+    private readonly void Read(ref Riser riser, in BodyRise disc, float zLow, float zHigh)
+    {
         if (_count < 0)
         {
-            var r = new Vector2(fall.Radius);
-            Collect(ref _lands, _entry, _cell, new WallBox(fall.Centre - r, fall.Centre + r, hit.Z, fall.Top), ref riser);
+            var r = new Vector2(disc.Radius);
+            Collect(ref _lands, _entry, _cell, new WallBox(disc.Centre - r, disc.Centre + r, zLow, zHigh), ref riser);
             return;
         }
 

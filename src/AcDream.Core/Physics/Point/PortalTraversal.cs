@@ -91,7 +91,7 @@ internal sealed class PortalTraversal
             float planeZ = shape.PlaneZ(q.P1.X, q.P1.Y);
             // With vertical motion a body in the air over an opening is over what lies below it, however high above it is.
             if (planeZ > q.Z + q.StepUp + PhysicsConstants.EdgeTolerance
-                || (!hop.Falling && !q.Options.Vertical && planeZ < q.Z - q.StepUp - PhysicsConstants.EdgeTolerance))
+                || (!hop.Falling && !q.Options.MovesVertically && planeZ < q.Z - q.StepUp - PhysicsConstants.EdgeTolerance))
             {
                 continue; // an opening overhead, or one this mover is not standing at
             }
