@@ -31,6 +31,9 @@ public enum SurfaceKind : byte
 
     /// <summary>The edge of a floor the body stood on and would have stepped off (edge slide); the id is the floor's: a cell's, or an object's GfxObj or Setup id (0 for the terrain's ground).</summary>
     FloorEdge,
+
+    /// <summary>A registered mover's walls (<see cref="Movers"/>): the contact's id is the mover's.</summary>
+    Mover,
 }
 
 /// <summary>A surface a move met.</summary>

@@ -175,6 +175,21 @@ public static class PhysicsConstants
     public const int MaxWallPolygonVertices = 64;
 
     /// <summary>
+    /// How far a mover's walls may reach from its origin, seen from above, metres (<see cref="MoverShape.Reach"/>): the
+    /// movers near a move are found by their origins, within this.
+    /// </summary>
+    public const float MaxMoverReach = 24f;
+
+    /// <summary>
+    /// How near a mover's disc comes to another mover's walls to touch it, metres (<c>Resolve</c> with a touch
+    /// buffer): a body held at a wall stops within its skin and the contact tolerance of it.
+    /// </summary>
+    public const float TouchReach = 0.001f;
+
+    /// <summary>The size of the squares the registered movers are filed in by their origins, metres.</summary>
+    internal const float MoverGridCell = 4f;
+
+    /// <summary>
     /// Most outdoor objects one landblock may register (its <c>LandBlockInfo</c>'s objects and
     /// buildings). A bound on the memory and build time of one registration, far above real data.
     /// </summary>

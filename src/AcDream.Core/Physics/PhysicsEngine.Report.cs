@@ -27,7 +27,97 @@ public sealed partial class PhysicsEngine
         out MoveReport report)
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry);
+        var lands = new Neighbourhood(_registry, _movers.Hold(), 0);
+        try
+        {
+            return Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
+        }
+        finally
+        {
+            Movers.Release(lands.Movers);
+        }
+    }
+
+    /// <summary>
+    /// <see cref="Resolve(Vector3, uint, Vector3, float, in MovementOptions)"/> for a registered mover: the mover
+    /// <paramref name="moverId"/> is not met by its own move, and the rules of who blocks whom read its committed state
+    /// (see <see cref="MoverState"/>). An id not committed (or 0) moves as an unregistered object: nothing skipped.
+    /// </summary>
+    /// <param name="currentPos">Where the mover's feet are, world metres.</param>
+    /// <param name="currentCellId">The cell the mover is in (<c>0xXXYYCCCC</c>).</param>
+    /// <param name="delta">The intended move, world metres (see the call without the id).</param>
+    /// <param name="stepUpHeight">Highest rise one move (one sub-step when sweeping) may climb, metres, ≥ 0.</param>
+    /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
+    /// <param name="moverId">The id of the mover that moves (<see cref="Movers"/>).</param>
+    /// <exception cref="ArgumentException">As the four-argument call.</exception>
+    public ResolveResult Resolve(
+        Vector3 currentPos,
+        uint currentCellId,
+        Vector3 delta,
+        float stepUpHeight,
+        in MovementOptions options,
+        uint moverId)
+    {
+        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
+        var lands = new Neighbourhood(_registry, _movers.Hold(), moverId);
+        try
+        {
+            var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
+            return Move(ref query, in options, delta.Z);
+        }
+        finally
+        {
+            Movers.Release(lands.Movers);
+        }
+    }
+
+    /// <summary>
+    /// <see cref="Resolve(Vector3, uint, Vector3, float, in MovementOptions, uint)"/>, what the move met
+    /// (<see cref="MoveReport"/>; a mover that stopped it is <see cref="SurfaceKind.Mover"/> with its id), and every
+    /// mover it touched, blocking or not: the movers met (not the mover itself, not one both Ethereal and
+    /// IgnoreCollisions) whose walls the mover's disc (its body's radius, or a point) comes within
+    /// <see cref="PhysicsConstants.TouchReach"/> of along the straight line from its start to the answer, over the height
+    /// from its lower feet to its higher head (a point: its feet to its step up). The answer is bit for bit that of the
+    /// call without them; they cost only the calls that ask.
+    /// </summary>
+    /// <param name="currentPos">Where the mover's feet are, world metres.</param>
+    /// <param name="currentCellId">The cell the mover is in (<c>0xXXYYCCCC</c>).</param>
+    /// <param name="delta">The intended move, world metres (see the call without the id).</param>
+    /// <param name="stepUpHeight">Highest rise one move (one sub-step when sweeping) may climb, metres, ≥ 0.</param>
+    /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
+    /// <param name="moverId">The id of the mover that moves, or 0.</param>
+    /// <param name="touched">Where the ids of the movers touched are written, in the order of the movers' registration slots.</param>
+    /// <param name="touchedCount">How many movers were touched; when more than <paramref name="touched"/> holds, the first that fit are written.</param>
+    /// <param name="report">What the move met.</param>
+    /// <exception cref="ArgumentException">As the four-argument call.</exception>
+    public ResolveResult Resolve(
+        Vector3 currentPos,
+        uint currentCellId,
+        Vector3 delta,
+        float stepUpHeight,
+        in MovementOptions options,
+        uint moverId,
+        Span<uint> touched,
+        out int touchedCount,
+        out MoveReport report)
+    {
+        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
+        var lands = new Neighbourhood(_registry, _movers.Hold(), moverId);
+        try
+        {
+            ResolveResult result = Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
+            touchedCount = lands.Movers is null ? 0 : Touches.Along(_frame, ref lands, currentPos, currentCellId, in result, stepUpHeight, options.Body, touched);
+            return result;
+        }
+        finally
+        {
+            Movers.Release(lands.Movers);
+        }
+    }
+
+    private ResolveResult Reported(
+        scoped ref Neighbourhood lands, Vector3 currentPos, uint currentCellId, Vector3 delta, float stepUpHeight, in MovementOptions options, out MoveReport report)
+    {
         var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
         SurfaceContact wall = default;
         query.Met = ref wall;

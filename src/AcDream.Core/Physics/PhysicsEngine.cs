@@ -43,6 +43,7 @@ public sealed partial class PhysicsEngine
     private readonly PointMover _point;
     private readonly BodyPlanner _planner;
     private readonly BodyMotion _motion;
+    private readonly Movers _movers;
 
     /// <summary>An engine whose world frame is global: world = landblock X·192 + landblock-local metres.</summary>
     public PhysicsEngine()
@@ -68,7 +69,14 @@ public sealed partial class PhysicsEngine
         _point = new PointMover(new OutdoorResolver(frame, portals), new IndoorResolver(frame, portals));
         _planner = new BodyPlanner(frame);
         _motion = new BodyMotion(frame, _point, new BodyResolver(_planner, frame, _point), _planner);
+        _movers = new Movers(frame);
     }
+
+    /// <summary>
+    /// The things that move (creatures, players, doors), in this engine's world frame: register, move and remove them
+    /// here, and <see cref="Movers.Commit"/> each frame; every <c>Resolve</c> meets the state last committed.
+    /// </summary>
+    public Movers Movers => _movers;
 
     /// <summary>Number of registered landblocks.</summary>
     public int LandblockCount => _registry.Count;
@@ -168,9 +176,16 @@ public sealed partial class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         MovementOptions none = default; // no effects: the spec's engine
-        var lands = new Neighbourhood(_registry);
-        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
-        return _point.Step(ref query);
+        var lands = new Neighbourhood(_registry, _movers.Hold(), 0);
+        try
+        {
+            var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
+            return _point.Step(ref query);
+        }
+        finally
+        {
+            Movers.Release(lands.Movers);
+        }
     }
 
     /// <summary>
@@ -196,9 +211,16 @@ public sealed partial class PhysicsEngine
         in MovementOptions options)
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry);
-        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
-        return Move(ref query, in options, delta.Z);
+        var lands = new Neighbourhood(_registry, _movers.Hold(), 0);
+        try
+        {
+            var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
+            return Move(ref query, in options, delta.Z);
+        }
+        finally
+        {
+            Movers.Release(lands.Movers);
+        }
     }
 
     /// <summary>
@@ -212,7 +234,7 @@ public sealed partial class PhysicsEngine
     /// <summary>Tests' seam: whether a body's move needs no plan (<see cref="BodyPlanner.IsOpenGround"/>), as <c>Resolve</c> asks it.</summary>
     internal bool IsOpenGround(Vector3 position, uint cellId, Vector2 move, MoverBody body)
     {
-        var lands = new Neighbourhood(_registry);
+        var lands = new Neighbourhood(_registry); // (the movers are not read here)
         MovementOptions options = new() { Body = body };
         var query = new MoveQuery(ref lands, position, cellId, move, 0f, in options);
         return _planner.IsOpenGround(ref query, move, body);
@@ -221,7 +243,7 @@ public sealed partial class PhysicsEngine
     /// <summary>Tests' seam: a body's move always planned (<see cref="BodyResolver.Resolve"/>), never the open-ground shortcut.</summary>
     internal ResolveResult ResolvePlanned(Vector3 position, uint cellId, Vector2 move, float stepUpHeight, in MovementOptions options)
     {
-        var lands = new Neighbourhood(_registry);
+        var lands = new Neighbourhood(_registry); // (the movers are not read here)
         var query = new MoveQuery(ref lands, position, cellId, move, stepUpHeight, in options);
         return _motion.Planned(ref query);
     }
@@ -229,7 +251,7 @@ public sealed partial class PhysicsEngine
     /// <summary>Tests' seam: how far a body overlaps the walls of its band beyond its sink (<see cref="BodyPlanner.Overlap"/>), metres.</summary>
     internal float BodyOverlap(Vector3 position, uint cellId, float stepUpHeight, MoverBody body)
     {
-        var lands = new Neighbourhood(_registry);
+        var lands = new Neighbourhood(_registry); // (the movers are not read here)
         MovementOptions options = new() { Body = body };
         var query = new MoveQuery(ref lands, position, cellId, Vector2.Zero, stepUpHeight, in options);
         return _planner.Overlap(ref query, position, cellId, body, out _);

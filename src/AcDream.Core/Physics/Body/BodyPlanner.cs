@@ -48,7 +48,8 @@ internal sealed class BodyPlanner(WorldFrame frame)
             // slide below would touch nothing; its path is the move itself, as the slide writes it.
             float grow = move.Radius + PhysicsConstants.ContactTolerance;
             Vector2 end = local + q.Delta;
-            if (open.IsOpen(Vector2.Min(local, end) - new Vector2(grow), Vector2.Max(local, end) + new Vector2(grow), move.ZLow, move.ZHigh, local - new Vector2(reach), local + new Vector2(reach)))
+            if (open.IsOpen(Vector2.Min(local, end) - new Vector2(grow), Vector2.Max(local, end) + new Vector2(grow), move.ZLow, move.ZHigh, local - new Vector2(reach), local + new Vector2(reach))
+                && !WallSet.AnyMover(ref q.Lands, entry, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh)))
             {
                 (points[0], points[1], path.Count) = (local, end, 2);
                 q.Open = entry.Cells[cellIndex] is { Objects.Length: 0 } cell && !float.IsNaN(cell.FloorLevel);
@@ -184,7 +185,8 @@ internal sealed class BodyPlanner(WorldFrame frame)
         float top = position.Z + body.Height;
         var reach = new Vector2(body.Radius + PhysicsConstants.ContactTolerance);
         if (place.CellIndex >= 0 && place.Entry.Cells[place.CellIndex] is { Objects.Length: 0, OpenFloor: OpenFloor open } cell
-            && cell.FloorZMax <= top && open.IsOpen(place.Local - reach, place.Local + reach, top - PhysicsConstants.ContactTolerance, top + dz, place.Local - reach, place.Local + reach))
+            && cell.FloorZMax <= top && open.IsOpen(place.Local - reach, place.Local + reach, top - PhysicsConstants.ContactTolerance, top + dz, place.Local - reach, place.Local + reach)
+            && !WallSet.AnyMover(ref q.Lands, place.Entry, new WallBox(place.Local - reach, place.Local + reach, top - PhysicsConstants.ContactTolerance, top + dz)))
         {
             return dz; // on open floor: no wall or ceiling of the cell over the disc in the rise, no floor of it overhead, no portal to another cell's
         }

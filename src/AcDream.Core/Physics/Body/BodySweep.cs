@@ -384,7 +384,7 @@ internal static class BodySweep
             // radius, else every move coming no nearer the axis than the body's own graze was taken for a graze and
             // the body walked into the trunk up to its own radius.
             WallSource owner = hit.Current;
-            hit.Current = owner with { Kind = SurfaceKind.Cylinder };
+            hit.Current = owner.Kind == SurfaceKind.Mover ? owner : owner with { Kind = SurfaceKind.Cylinder }; // (a mover is named as one)
             SweepSegment(in move, wall.A + offset, wall.B + offset, wall.Radius, ref hit);
             hit.Current = owner;
         }

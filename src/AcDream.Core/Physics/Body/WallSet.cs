@@ -27,6 +27,8 @@ internal ref struct WallSet
     /// <summary>Marks a listed source that is an outdoor object (else a cell).</summary>
     private const int ObjectBit = 1 << 23;
 
+    private const int MoverBit = 1 << 22;
+
     private readonly ref Neighbourhood _lands;
     private readonly LandblockEntry _entry;
     private readonly int _cell;
@@ -43,7 +45,9 @@ internal ref struct WallSet
         _entry = entry;
         _cell = cellIndex;
         var list = new Lister(storage);
-        bool listed = cellIndex >= 0 ? Reach(entry, cellIndex, in box, ref list) : Collect(ref lands, entry, -1, in box, ref list);
+        bool listed = cellIndex >= 0
+            ? Reach(entry, cellIndex, in box, ref list) && Movers(ref lands, entry, in box, ref list)
+            : Collect(ref lands, entry, -1, in box, ref list);
         _count = listed ? list.Count : -1;
         _listed = storage;
     }
@@ -62,7 +66,7 @@ internal ref struct WallSet
         Vector128<float> query = WallExtent.Query(box.Lo, box.Hi);
         for (int i = 0; i < list.Count; i++)
         {
-            int cell = list[i] & (ObjectBit - 1);
+            int cell = list[i] & (MoverBit - 1);
             int[] targets = entry.PortalTargets[cell];
             ReadOnlySpan<Vector128<float>> extents = entry.Cells[cell].PortalExtents.AsSpan(0, targets.Length);
             for (int k = 0; k < extents.Length; k++)
@@ -200,7 +204,39 @@ internal ref struct WallSet
             return false;
         }
 
-        return cellIndex >= 0 || !lands.ReachInto(entry).Meets(box.Lo, box.Hi) || CollectAcross(ref lands, entry, in box, ref sink);
+        return (cellIndex >= 0 || !lands.ReachInto(entry).Meets(box.Lo, box.Hi) || CollectAcross(ref lands, entry, in box, ref sink))
+            && (lands.Movers is null || Movers(ref lands, entry, in box, ref sink));
+    }
+
+    /// <summary>Whether a solid mover's walls meet the box and band (a shortcut that finds no wall of the world there must still sweep it).</summary>
+    public static bool AnyMover(ref Neighbourhood lands, LandblockEntry entry, in WallBox box)
+    {
+        var none = new Lister([]);
+        return lands.Movers is not null && !Movers(ref lands, entry, in box, ref none);
+    }
+
+    /// <summary>The solid movers (to this call's mover) whose walls meet the box and band, from every landblock around.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers committed
+    private static bool Movers<T>(ref Neighbourhood lands, LandblockEntry entry, in WallBox box, ref T sink)
+        where T : ISourceSink, allows ref struct
+    {
+        if (lands.Movers is not MoverFrame movers)
+        {
+            return true;
+        }
+
+        for (MoverFrame.Near near = movers.Around(entry.X, entry.Y, box.Lo, box.Hi); near.MoveNext();)
+        {
+            int j = near.Current;
+            if (movers.TryOffset(j, entry.X, entry.Y, out Vector2 offset, out int slot) && lands.Blocks(j)
+                && new WallBounds(movers.Walls[j].Min, movers.Walls[j].Max, movers.Walls[j].ZMin, movers.Walls[j].ZMax).Meets(in box, offset)
+                && !sink.Add((slot << SlotShift) | MoverBit | j))
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
     /// <summary>The sources of the neighbours of <paramref name="entry"/> whose reach meets the box; false when the sink stopped.</summary>
@@ -309,10 +345,18 @@ internal ref struct WallSet
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public bool Add(int source)
         {
-            int slot = source >> SlotShift, index = source & (ObjectBit - 1);
-            LandblockEntry of = slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
+            int slot = source >> SlotShift, index = source & (MoverBit - 1);
             Vector2 offset = Offset(slot);
             Vector2 boxLo = lo - offset, boxHi = hi - offset;
+            if ((source & MoverBit) != 0)
+            {
+                MoverFrame movers = _lands.Movers!;
+                _hit.Current = new WallSource(SurfaceKind.Mover, movers.Ids[index]);
+                BodySweep.SweepWalls(movers.Walls[index], offset, boxLo, boxHi, in _move, ref _hit);
+                return true;
+            }
+
+            LandblockEntry of = slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
             if ((source & ObjectBit) != 0)
             {
                 ObjectSurface outdoors = of.OutdoorObjects[index];
@@ -344,9 +388,25 @@ internal ref struct WallSet
 
         public bool Add(int source)
         {
-            int slot = source >> SlotShift, index = source & (ObjectBit - 1);
-            LandblockEntry of = slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
+            int slot = source >> SlotShift, index = source & (MoverBit - 1);
             Vector2 offset = Offset(slot);
+            if ((source & MoverBit) != 0)
+            {
+                MoverFrame movers = _lands.Movers!;
+                _hit.Current = new WallSource(SurfaceKind.Mover, movers.Ids[index]);
+                if (steep)
+                {
+                    Overhead.Steep(movers.Walls[index], offset, in _rise, ref _hit);
+                }
+                else
+                {
+                    Overhead.Walls(movers.Walls[index], offset, in _rise, ref _hit);
+                }
+
+                return true;
+            }
+
+            LandblockEntry of = slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
             if ((source & ObjectBit) != 0)
             {
                 Read(of.OutdoorObjects[index], offset);

@@ -148,7 +148,7 @@ internal ref struct MoveQuery
     }
 
 
-    private static bool IsCellOfTheWorld(uint cellId)
+    internal static bool IsCellOfTheWorld(uint cellId)
     {
         uint low = cellId & 0xFFFF;
         return !((low > PhysicsConstants.CellsPerSide * PhysicsConstants.CellsPerSide && low < CellIds.FirstIndoor) || low > CellIds.LastIndoor)

@@ -43,8 +43,45 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
         (int)Math.Min(Math.Ceiling(move.Length() / (double)sweep), PhysicsConstants.MaxSweepSteps);
 
     /// <summary>One move, end-point checked.</summary>
-    public ResolveResult Step(ref MoveQuery query) =>
-        CellIds.IsIndoor(query.CellId) ? indoor.Resolve(ref query) : outdoor.Resolve(ref query);
+    public ResolveResult Step(ref MoveQuery query)
+    {
+        ResolveResult result = CellIds.IsIndoor(query.CellId) ? indoor.Resolve(ref query) : outdoor.Resolve(ref query);
+        return query.Lands.Movers is null || query.Options.Body is not null || result.IsRefused || query.Entry is null
+            ? result
+            : AmongMovers(ref query, result); // (a body meets the movers in its sweep)
+    }
+
+    /// <summary>
+    /// A point's move that crosses a solid mover's walls at the feet plus the step (as an object's) is refused where it
+    /// stands: the answer of a move of zero from its start, with <see cref="ResolveOutcome.Wall"/> and the wall's normal.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Step: only with movers committed
+    private ResolveResult AmongMovers(ref MoveQuery q, ResolveResult result)
+    {
+        MoverFrame movers = q.Lands.Movers!;
+        var line = new StepLine(q.P0, q.P1, q.Z + q.StepUp);
+        var hit = ObjectHit.Over(0f);
+        uint met = 0;
+        for (MoverFrame.Near near = movers.Around(q.Entry.X, q.Entry.Y, line.Lo, line.Hi); near.MoveNext();)
+        {
+            int j = near.Current;
+            if (q.Lands.Blocks(j) && movers.TryOffset(j, q.Entry.X, q.Entry.Y, out Vector2 offset, out _)
+                && line.Less(offset).FirstCrossing(movers.Walls[j], ref hit))
+            {
+                met = movers.Ids[j];
+            }
+        }
+
+        if (met == 0)
+        {
+            return result;
+        }
+
+        q.Meet(SurfaceKind.Mover, met);
+        MoveQuery stay = q.Next(q.Position, q.CellId, Vector2.Zero);
+        ResolveResult still = CellIds.IsIndoor(stay.CellId) ? indoor.Resolve(ref stay) : outdoor.Resolve(ref stay);
+        return still with { Outcome = ResolveOutcome.Wall, SurfaceNormal = hit.Normal };
+    }
 
     /// <summary>
     /// One sub-step of a swept move (<see cref="MovementOptions.SweepStepLength"/>), end-point checked; refused as a

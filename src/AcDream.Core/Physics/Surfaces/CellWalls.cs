@@ -92,14 +92,14 @@ internal sealed class CellWalls
     public WallExtent[] Extents { get; }
 
     /// <summary>Bounds of all the walls seen from above (empty when there are none).</summary>
-    public Vector2 Min { get; }
+    public Vector2 Min { get; private set; }
 
-    public Vector2 Max { get; }
+    public Vector2 Max { get; private set; }
 
     /// <summary>The lowest and highest Z of all the walls (empty when there are none).</summary>
-    public float ZMin { get; }
+    public float ZMin { get; private set; }
 
-    public float ZMax { get; }
+    public float ZMax { get; private set; }
 
     /// <summary>
     /// Builds the walls from the placed physics polygons (each with its winding normal), leaving out
@@ -166,6 +166,56 @@ internal sealed class CellWalls
     /// at one of its two ends along the wall and at its lowest or highest Z (within
     /// <see cref="PhysicsConstants.EdgeTolerance"/>); then the ends' points seen from above.
     /// </summary>
+    /// <summary>A copy with arrays of its own, for <see cref="PlaceFrom"/> to write into.</summary>
+    public CellWalls Copy() => new((WallPolygon[])Polygons.Clone(), (Vector3[])Vertices.Clone(), HasSteep);
+
+    /// <summary>
+    /// Writes into this copy (of <paramref name="local"/>) the walls of <paramref name="local"/> turned about Z by the
+    /// angle whose cosine and sine are given and then moved by <paramref name="origin"/>: each coordinate computed in
+    /// double and rounded once. A turn about Z keeps an upright wall upright and a cylinder a cylinder. Only for a copy
+    /// no reader holds.
+    /// </summary>
+    public void PlaceFrom(CellWalls local, double cos, double sin, Vector3 origin)
+    {
+        Vector3[] from = local.Vertices;
+        for (int i = 0; i < from.Length; i++)
+        {
+            Vector2 xy = Turn(new Vector2(from[i].X, from[i].Y), cos, sin, origin);
+            Vertices[i] = new Vector3(xy, (float)((double)origin.Z + from[i].Z));
+        }
+
+        Vector2 min = new(float.MaxValue), max = new(float.MinValue);
+        float zMin = float.MaxValue, zMax = float.MinValue;
+        for (int i = 0; i < Polygons.Length; i++)
+        {
+            WallPolygon w = local.Polygons[i];
+            Vector2 a = Turn(w.A, cos, sin, origin), b = Turn(w.B, cos, sin, origin);
+            Vector2 lo = a - new Vector2(w.Radius), hi = a + new Vector2(w.Radius);
+            if (w.Radius == 0f)
+            {
+                (lo, hi) = (new Vector2(float.MaxValue), new Vector2(float.MinValue));
+                foreach (Vector3 v in Vertices.AsSpan(w.First, w.Count))
+                {
+                    (lo, hi) = (Vector2.Min(lo, new Vector2(v.X, v.Y)), Vector2.Max(hi, new Vector2(v.X, v.Y)));
+                }
+            }
+
+            var placed = w with
+            {
+                ZMin = (float)((double)origin.Z + w.ZMin), ZMax = (float)((double)origin.Z + w.ZMax), Min = lo, Max = hi,
+                A = w.IsUpright ? a : default, B = w.IsUpright ? b : default,
+            };
+            Polygons[i] = placed;
+            Extents[i] = new WallExtent(placed);
+            (min, max, zMin, zMax) = (Vector2.Min(min, lo), Vector2.Max(max, hi), MathF.Min(zMin, placed.ZMin), MathF.Max(zMax, placed.ZMax));
+        }
+
+        (Min, Max, ZMin, ZMax) = (min, max, zMin, zMax);
+    }
+
+    private static Vector2 Turn(Vector2 p, double cos, double sin, Vector3 origin) =>
+        new((float)(origin.X + ((cos * p.X) - (sin * p.Y))), (float)(origin.Y + ((sin * p.X) + (cos * p.Y))));
+
     private static (bool Upright, Vector2 A, Vector2 B) Upright(Vector3[] v, Vector3 normal, float zMin, float zMax)
     {
         var along = new Vector2(-normal.Y, normal.X);

@@ -26,6 +26,31 @@ internal struct Neighbourhood
 
     public Neighbourhood(LandblockRegistry registry) => _registry = registry;
 
+    /// <summary>The committed movers this call holds (null: none), and who is moving: its id (0: not a mover) and state.</summary>
+    public Neighbourhood(LandblockRegistry registry, MoverFrame? movers, uint self)
+    {
+        _registry = registry;
+        Movers = movers;
+        if (movers is not null && self != 0)
+        {
+            (SelfId, Self) = (self, movers.StateOf(self));
+        }
+    }
+
+    /// <summary>The committed movers this call reads, one whole state; null when there are none.</summary>
+    public readonly MoverFrame? Movers;
+
+    /// <summary>The id of the mover that moves (skipped), or 0.</summary>
+    public readonly uint SelfId;
+
+    /// <summary>The state of the mover that moves (the rules of who blocks whom read it).</summary>
+    public readonly MoverState Self;
+
+    /// <summary>Whether mover <paramref name="index"/> of <see cref="Movers"/> stops this call's move (not the mover itself, and solid to it).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly bool Blocks(int index) =>
+        Movers!.Ids[index] != SelfId && MoverState.Blocks(in Self, in Movers.States[index]);
+
     /// <summary>Landblock (<paramref name="x"/>, <paramref name="y"/>), as this call first read it; null when not registered or off the world.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public LandblockEntry? Get(int x, int y)

@@ -1,0 +1,480 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>Where a door is in its opening and closing (<see cref="Movers.Open"/>, <see cref="Movers.Close"/>).</summary>
+public enum DoorState : byte
+{
+    /// <summary>Solid: it blocks from both sides.</summary>
+    Closed = 0,
+
+    /// <summary>Ethereal: it blocks nothing; a move through it records the touch.</summary>
+    Open,
+
+    /// <summary>Told to close, but something still overlaps it: Ethereal, re-checked at every <see cref="Movers.Commit"/>.</summary>
+    Closing,
+}
+
+/// <summary>
+/// The things that move: creatures, players, doors, registered at run time with an id, a shape, a position and an
+/// orientation (world frame, metres), the cell they are in and their state. Every <c>Resolve</c> meets the movers of the
+/// state last committed, point and body alike, across seams, indoors and outdoors (a mover is found by its position,
+/// whatever cell it is in): a solid one is a wall, an Ethereal one is only touched (see <see cref="MoverState"/> for who
+/// blocks whom).
+/// </summary>
+/// <remarks>
+/// <para>
+/// Changes (<see cref="Add"/>, <see cref="Move"/>, <see cref="SetState"/>, <see cref="Remove"/>, <see cref="Open"/>,
+/// <see cref="Close"/>) are kept until <see cref="Commit"/> publishes them all at once: a call sees one whole committed
+/// state from its start to its end, never part of an update. Changes are made from one thread at a time (they are
+/// serialised); any number of threads resolve meanwhile and never wait for them. Moving a mover allocates nothing; a
+/// commit allocates only when more movers are registered than ever before or a reader still holds every spare state.
+/// </para>
+/// <para>With no movers committed, every answer is the engine's without them, bit for bit, and costs one null check.</para>
+/// </remarks>
+public sealed class Movers
+{
+    private readonly WorldFrame _frame;
+    private readonly object _write = new();
+    private readonly Dictionary<uint, int> _slots = [];
+    private readonly List<MoverFrame> _spare = [];
+    private Slot[] _movers = new Slot[16];
+    private int[] _buckets = [];
+    private int _count;
+    private long _version;
+    private MoverFrame? _current;
+
+    internal Movers(WorldFrame frame) => _frame = frame;
+
+    /// <summary>How many movers are registered (committed or not).</summary>
+    public int Count
+    {
+        get
+        {
+            lock (_write)
+            {
+                return _count;
+            }
+        }
+    }
+
+    /// <summary>
+    /// Registers a mover (seen by <c>Resolve</c> from the next <see cref="Commit"/>).
+    /// </summary>
+    /// <param name="id">Its id, not 0 and not registered.</param>
+    /// <param name="shape">Its walls in its own frame.</param>
+    /// <param name="position">Its origin, world frame, metres (feet of a creature).</param>
+    /// <param name="cellId">The cell it is in, a full <c>0xXXYYCCCC</c> id: its landblock is the frame its walls are placed in.</param>
+    /// <param name="orientation">A turn about Z (creatures and doors stand upright); need not be unit.</param>
+    /// <param name="state">What it is and its bits.</param>
+    /// <exception cref="ArgumentException">An argument is invalid: the message names it, the id and what is wrong.</exception>
+    public void Add(uint id, MoverShape shape, Vector3 position, uint cellId, Quaternion orientation, MoverState state)
+    {
+        ArgumentNullException.ThrowIfNull(shape);
+        lock (_write)
+        {
+            if (id == 0 || _slots.ContainsKey(id))
+            {
+                throw new ArgumentException($"mover 0x{id:X8}: {(id == 0 ? "0 is not an id" : "already registered")}.", nameof(id));
+            }
+
+            Slot slot = Place(id, position, cellId, orientation);
+            (slot.Id, slot.Shape, slot.State, slot.Version) = (id, shape, state, ++_version);
+            if (_count == _movers.Length)
+            {
+                Array.Resize(ref _movers, 2 * _count);
+            }
+
+            _slots.Add(id, _count);
+            _movers[_count++] = slot;
+        }
+    }
+
+    /// <summary>Moves a registered mover (seen from the next <see cref="Commit"/>); arguments as for <see cref="Add"/>. Allocates nothing.</summary>
+    /// <exception cref="ArgumentException">The id is not registered, or an argument is invalid.</exception>
+    public void Move(uint id, Vector3 position, uint cellId, Quaternion orientation)
+    {
+        lock (_write)
+        {
+            ref Slot slot = ref Find(id);
+            Slot placed = Place(id, position, cellId, orientation);
+            (slot.X, slot.Y, slot.Local, slot.Cos, slot.Sin, slot.CellId, slot.Version) =
+                (placed.X, placed.Y, placed.Local, placed.Cos, placed.Sin, placed.CellId, ++_version);
+        }
+    }
+
+    /// <summary>Sets a registered mover's state (seen from the next <see cref="Commit"/>); a door told to close by <see cref="Close"/> stops closing.</summary>
+    /// <exception cref="ArgumentException">The id is not registered.</exception>
+    public void SetState(uint id, MoverState state)
+    {
+        lock (_write)
+        {
+            ref Slot slot = ref Find(id);
+            (slot.State, slot.Closing) = (state, false);
+        }
+    }
+
+    /// <summary>The state of a registered mover as it will be committed.</summary>
+    /// <exception cref="ArgumentException">The id is not registered.</exception>
+    public MoverState GetState(uint id)
+    {
+        lock (_write)
+        {
+            return Find(id).State;
+        }
+    }
+
+    /// <summary>Removes a mover (gone from the next <see cref="Commit"/>); false when it was not registered.</summary>
+    public bool Remove(uint id)
+    {
+        lock (_write)
+        {
+            if (!_slots.Remove(id, out int i))
+            {
+                return false;
+            }
+
+            RemoveAt(i);
+            return true;
+        }
+    }
+
+    /// <summary>Removes every mover whose cell is in the landblock of <paramref name="landblockId"/> (<c>0xXXYY....</c>), as that landblock unloads; how many.</summary>
+    public int RemoveLandblock(uint landblockId)
+    {
+        lock (_write)
+        {
+            int removed = 0;
+            for (int i = _count - 1; i >= 0; i--)
+            {
+                if (CellIds.Prefix(_movers[i].CellId) == CellIds.Prefix(landblockId))
+                {
+                    _slots.Remove(_movers[i].Id);
+                    RemoveAt(i);
+                    removed++;
+                }
+            }
+
+            return removed;
+        }
+    }
+
+    /// <summary>Opens a door: Ethereal from the next <see cref="Commit"/> (the game's door opens at once).</summary>
+    /// <exception cref="ArgumentException">The id is not a registered door.</exception>
+    public void Open(uint doorId)
+    {
+        lock (_write)
+        {
+            ref Slot door = ref FindDoor(doorId);
+            door.State = door.State with { Physics = door.State.Physics | PhysicsStateFlags.Ethereal };
+            door.Closing = false;
+        }
+    }
+
+    /// <summary>
+    /// Closes a door: solid at the first <see cref="Commit"/> at which no other mover's cylinder overlaps its walls; until
+    /// then it stays Ethereal and is re-checked at every commit (the game's door hold: a door never closes on someone
+    /// standing in it).
+    /// </summary>
+    /// <exception cref="ArgumentException">The id is not a registered door.</exception>
+    public void Close(uint doorId)
+    {
+        lock (_write)
+        {
+            ref Slot door = ref FindDoor(doorId);
+            door.Closing = (door.State.Physics & PhysicsStateFlags.Ethereal) != 0;
+        }
+    }
+
+    /// <summary>Where a door is: as committed, or as it will be at the next commit for a change not yet committed.</summary>
+    /// <exception cref="ArgumentException">The id is not a registered door.</exception>
+    public DoorState GetDoorState(uint doorId)
+    {
+        lock (_write)
+        {
+            ref Slot door = ref FindDoor(doorId);
+            return door.Closing ? DoorState.Closing : (door.State.Physics & PhysicsStateFlags.Ethereal) != 0 ? DoorState.Open : DoorState.Closed;
+        }
+    }
+
+    /// <summary>
+    /// Publishes every change since the last commit as one whole state: calls that start after it see all of them,
+    /// calls under way finish on the state they started with. Doors told to close become solid here once nothing
+    /// overlaps them.
+    /// </summary>
+    public void Commit()
+    {
+        lock (_write)
+        {
+            if (_count == 0)
+            {
+                Interlocked.Exchange(ref _current, null);
+                return;
+            }
+
+            MoverFrame next = Spare();
+            Fill(next);
+            HoldDoors(next);
+            Interlocked.Exchange(ref _current, next); // (a full fence: the frame is written before it is seen)
+        }
+    }
+
+    /// <summary>The committed state, held until <see cref="Release"/>: never rewritten while held. Null when no mover is committed.</summary>
+    internal MoverFrame? Hold()
+    {
+        while (Volatile.Read(ref _current) is MoverFrame frame)
+        {
+            Interlocked.Increment(ref frame.Readers);
+            if (ReferenceEquals(Volatile.Read(ref _current), frame))
+            {
+                return frame; // still current after the hold is counted: the writer will not pick it
+            }
+
+            Interlocked.Decrement(ref frame.Readers);
+        }
+
+        return null;
+    }
+
+    internal static void Release(MoverFrame? frame)
+    {
+        if (frame is not null)
+        {
+            Interlocked.Decrement(ref frame.Readers);
+        }
+    }
+
+    /// <summary>Whether any mover is committed (one read; a call that finds none reads nothing else of the movers).</summary>
+    internal bool Any => Volatile.Read(ref _current) is not null;
+
+    private MoverFrame Spare()
+    {
+        MoverFrame? current = _current;
+        foreach (MoverFrame frame in _spare)
+        {
+            if (!ReferenceEquals(frame, current) && Volatile.Read(ref frame.Readers) == 0)
+            {
+                return frame;
+            }
+        }
+
+        var added = new MoverFrame(); // every spare state is held or current: one more (rare)
+        _spare.Add(added);
+        return added;
+    }
+
+    private void Fill(MoverFrame f)
+    {
+        int n = _count;
+        if (f.Ids.Length < n)
+        {
+            int size = Math.Max(n, _movers.Length);
+            f.Ids = new uint[size];
+            f.States = new MoverState[size];
+            f.LandblockX = new int[size];
+            f.LandblockY = new int[size];
+            f.SquareX = new int[size];
+            f.SquareY = new int[size];
+            f.Order = new int[size];
+            Array.Resize(ref f.Walls, size);
+            Array.Resize(ref f.Shapes, size);
+            Array.Resize(ref f.Versions, size);
+        }
+
+        float reach = 0f;
+        for (int i = 0; i < n; i++)
+        {
+            ref readonly Slot m = ref _movers[i];
+            (f.Ids[i], f.States[i], f.LandblockX[i], f.LandblockY[i]) = (m.Id, m.State, m.X, m.Y);
+            reach = MathF.Max(reach, m.Shape.Reach);
+            if (f.Versions[i] == m.Version && ReferenceEquals(f.Shapes[i], m.Shape))
+            {
+                continue; // placed when this state was last written, and not moved since
+            }
+
+            if (!ReferenceEquals(f.Shapes[i], m.Shape))
+            {
+                (f.Walls[i], f.Shapes[i]) = (m.Shape.Walls.Copy(), m.Shape);
+            }
+
+            f.Walls[i].PlaceFrom(m.Shape.Walls, m.Cos, m.Sin, m.Local);
+            f.Versions[i] = m.Version;
+        }
+
+        (f.Count, f.Reach) = (n, reach);
+        File(f);
+    }
+
+    /// <summary>Files the movers by the square of their origins: a counting sort into the buckets of the squares' hash.</summary>
+    private void File(MoverFrame f)
+    {
+        int n = f.Count, size = 64;
+        while (size < 2 * n)
+        {
+            size *= 2;
+        }
+
+        if (f.Heads.Length != size + 1)
+        {
+            (f.Heads, f.ById) = (new int[size + 1], new int[size]);
+        }
+
+        (f.Mask, int[] heads) = (size - 1, f.Heads);
+        Array.Clear(heads);
+        if (_buckets.Length < n)
+        {
+            _buckets = new int[_movers.Length];
+        }
+
+        int[] buckets = _buckets;
+        for (int i = 0; i < n; i++)
+        {
+            ref readonly Slot m = ref _movers[i];
+            (f.SquareX[i], f.SquareY[i]) = (MoverFrame.Square(m.X, m.Local.X), MoverFrame.Square(m.Y, m.Local.Y));
+            buckets[i] = f.Bucket(f.SquareX[i], f.SquareY[i]);
+            heads[buckets[i]]++;
+        }
+
+        for (int b = 1; b <= size; b++)
+        {
+            heads[b] += heads[b - 1]; // each bucket's end
+        }
+
+        for (int i = n - 1; i >= 0; i--)
+        {
+            f.Order[--heads[buckets[i]]] = i; // from the back: each bucket's end becomes its start, in the movers' order
+        }
+
+        Array.Clear(f.ById);
+        for (int i = 0; i < n; i++)
+        {
+            int at = f.IdSlot(f.Ids[i]);
+            while (f.ById[at] != 0)
+            {
+                at = (at + 1) & f.Mask;
+            }
+
+            f.ById[at] = i + 1;
+        }
+    }
+
+    /// <summary>Doors told to close become solid once no other mover's cylinder overlaps their walls in the state about to be published.</summary>
+    private void HoldDoors(MoverFrame f)
+    {
+        for (int i = 0; i < f.Count; i++)
+        {
+            ref Slot door = ref _movers[i];
+            if (!door.Closing || Overlapped(f, i))
+            {
+                continue;
+            }
+
+            door.State = door.State with { Physics = door.State.Physics & ~PhysicsStateFlags.Ethereal };
+            (door.Closing, f.States[i]) = (false, door.State);
+        }
+    }
+
+    private static bool Overlapped(MoverFrame f, int door)
+    {
+        CellWalls walls = f.Walls[door];
+        int x = f.LandblockX[door], y = f.LandblockY[door];
+        for (MoverFrame.Near near = f.Around(x, y, walls.Min, walls.Max); near.MoveNext();)
+        {
+            int j = near.Current;
+            if (j == door || f.States[j].Kind == MoverKind.Door || !MoverState.Meets(in f.States[j]) || !f.TryOffset(j, x, y, out Vector2 offset, out _))
+            {
+                continue;
+            }
+
+            foreach (WallPolygon c in f.Walls[j].Polygons)
+            {
+                if (c.Radius > 0f)
+                {
+                    var still = new BodyMove(c.A + offset, Vector2.Zero, c.Radius, c.Radius, 0f, c.ZMin, c.ZMax);
+                    var hit = WallHit.None;
+                    BodySweep.SweepWalls(walls, Vector2.Zero, still.P - new Vector2(c.Radius), still.P + new Vector2(c.Radius), in still, ref hit);
+                    if (hit.Depth > 0f)
+                    {
+                        return true;
+                    }
+                }
+            }
+        }
+
+        return false;
+    }
+
+    private Slot Place(uint id, Vector3 position, uint cellId, Quaternion orientation)
+    {
+        if (!Geometry.IsFinite(position))
+        {
+            throw new ArgumentException($"mover 0x{id:X8}: position {position} must be finite.", nameof(position));
+        }
+
+        if (!MoveQuery.IsCellOfTheWorld(cellId))
+        {
+            throw new ArgumentException($"mover 0x{id:X8}: cellId 0x{cellId:X8} is not a cell of the world (outdoor 0x0001..0x0040, indoor 0x0100..0xFFFD).", nameof(cellId));
+        }
+
+        double w = orientation.W, z = orientation.Z, length = Math.Sqrt((w * w) + (z * z) + ((double)orientation.X * orientation.X) + ((double)orientation.Y * orientation.Y));
+        if (!(length > 1e-6) || !double.IsFinite(length) || Math.Abs(orientation.X) > 1e-3 * length || Math.Abs(orientation.Y) > 1e-3 * length)
+        {
+            throw new ArgumentException(
+                $"mover 0x{id:X8}: orientation {orientation} is not a turn about Z (finite, longer than 1e-6, X and Y within 1e-3 of its length).", nameof(orientation));
+        }
+
+        _frame.Locate(position, cellId, out int x, out int y, out Vector2 local);
+        double turn = (w * w) + (z * z);
+        return new Slot
+        {
+            X = x, Y = y, Local = new Vector3(local, position.Z), CellId = cellId,
+            Cos = ((w * w) - (z * z)) / turn, Sin = 2.0 * w * z / turn,
+        };
+    }
+
+    private ref Slot Find(uint id)
+    {
+        if (!_slots.TryGetValue(id, out int i))
+        {
+            throw new ArgumentException($"mover 0x{id:X8} is not registered.", nameof(id));
+        }
+
+        return ref _movers[i];
+    }
+
+    private ref Slot FindDoor(uint doorId)
+    {
+        if (!_slots.TryGetValue(doorId, out int i) || _movers[i].State.Kind != MoverKind.Door)
+        {
+            throw new ArgumentException($"mover 0x{doorId:X8} is not a registered door.", nameof(doorId));
+        }
+
+        return ref _movers[i];
+    }
+
+    private void RemoveAt(int i)
+    {
+        int last = --_count;
+        if (i != last)
+        {
+            _movers[i] = _movers[last];
+            _movers[i].Version = ++_version; // another mover in this slot: placed again
+            _slots[_movers[i].Id] = i;
+        }
+
+        _movers[last] = default;
+    }
+
+    private struct Slot
+    {
+        public uint Id;
+        public MoverShape Shape;
+        public MoverState State;
+        public bool Closing;
+        public int X, Y;
+        public Vector3 Local;
+        public double Cos, Sin;
+        public uint CellId;
+        public long Version;
+    }
+}

@@ -1,0 +1,48 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>The movers a call's move touched, blocking or not, for the caller that asks (a pass after the move).</summary>
+internal static class Touches
+{
+    /// <summary>
+    /// Writes into <paramref name="touched"/> the ids of the movers met (not the mover itself, not one both Ethereal and
+    /// IgnoreCollisions) whose walls the disc of the body (or a point) grown by <see cref="PhysicsConstants.TouchReach"/>
+    /// meets on the straight line from <paramref name="start"/> to the answer, over the height from the lower feet to the
+    /// higher head (a point: to its step up); how many there are.
+    /// </summary>
+    public static int Along(WorldFrame frame, ref Neighbourhood lands, Vector3 start, uint cellId, in ResolveResult result, float stepUp, MoverBody? body, Span<uint> touched)
+    {
+        MoverFrame movers = lands.Movers!;
+        frame.Locate(start, cellId, out int x, out int y, out Vector2 p0);
+        Vector2 p1 = new Vector2(result.Position.X, result.Position.Y) - frame.Origin(x, y);
+        float radius = (body?.Radius ?? 0f) + PhysicsConstants.TouchReach;
+        float zLow = MathF.Min(start.Z, result.Position.Z);
+        float zHigh = MathF.Max(start.Z, result.Position.Z) + MathF.Max(body?.Height ?? stepUp, PhysicsConstants.TouchReach);
+        var move = new BodyMove(p0, p1 - p0, radius, radius, 0f, zLow, zHigh);
+        Vector2 lo = Vector2.Min(p0, p1) - new Vector2(radius), hi = Vector2.Max(p0, p1) + new Vector2(radius);
+        int count = 0;
+        for (MoverFrame.Near near = movers.Around(x, y, lo, hi); near.MoveNext();)
+        {
+            int j = near.Current;
+            if (movers.Ids[j] == lands.SelfId || !MoverState.Meets(in movers.States[j]) || !movers.TryOffset(j, x, y, out Vector2 offset, out _))
+            {
+                continue;
+            }
+
+            var hit = WallHit.None;
+            BodySweep.SweepWalls(movers.Walls[j], offset, lo - offset, hi - offset, in move, ref hit);
+            if (hit.T < 1f || hit.Depth > 0f)
+            {
+                if (count < touched.Length)
+                {
+                    touched[count] = movers.Ids[j];
+                }
+
+                count++;
+            }
+        }
+
+        return count;
+    }
+}
