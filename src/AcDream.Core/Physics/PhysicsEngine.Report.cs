@@ -77,7 +77,7 @@ public sealed partial class PhysicsEngine
     /// mover it touched, blocking or not: the movers met (not the mover itself, not one both Ethereal and
     /// IgnoreCollisions) whose walls the mover's disc (its body's radius, or a point) comes within
     /// <see cref="PhysicsConstants.TouchReach"/> of along the straight line from its start to the answer, over the height
-    /// from its lower feet to its higher head (a point: its feet to its step up). The answer is bit for bit that of the
+    /// from its lower feet to its higher head (a point: its feet to its step up), and the one that stopped it. The answer is bit for bit that of the
     /// call without them; they cost only the calls that ask.
     /// </summary>
     /// <param name="currentPos">Where the mover's feet are, world metres.</param>
@@ -106,7 +106,8 @@ public sealed partial class PhysicsEngine
         try
         {
             ResolveResult result = Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
-            touchedCount = lands.Movers is null ? 0 : Touches.Along(_frame, ref lands, currentPos, currentCellId, in result, stepUpHeight, options.Body, touched);
+            touchedCount = lands.Movers is null ? 0 : Touches.Along(
+                _frame, ref lands, currentPos, currentCellId, in result, stepUpHeight, options.Body, report.Wall.Kind == SurfaceKind.Mover ? report.Wall.Id : 0, touched);
             return result;
         }
         finally

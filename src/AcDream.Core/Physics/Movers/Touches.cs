@@ -9,9 +9,10 @@ internal static class Touches
     /// Writes into <paramref name="touched"/> the ids of the movers met (not the mover itself, not one both Ethereal and
     /// IgnoreCollisions) whose walls the disc of the body (or a point) grown by <see cref="PhysicsConstants.TouchReach"/>
     /// meets on the straight line from <paramref name="start"/> to the answer, over the height from the lower feet to the
-    /// higher head (a point: to its step up); how many there are.
+    /// higher head (a point: to its step up), and <paramref name="stoppedBy"/> (a point's sub-step refused before the
+    /// mover it would cross stops short of it); how many there are.
     /// </summary>
-    public static int Along(WorldFrame frame, ref Neighbourhood lands, Vector3 start, uint cellId, in ResolveResult result, float stepUp, MoverBody? body, Span<uint> touched)
+    public static int Along(WorldFrame frame, ref Neighbourhood lands, Vector3 start, uint cellId, in ResolveResult result, float stepUp, MoverBody? body, uint stoppedBy, Span<uint> touched)
     {
         MoverFrame movers = lands.Movers!;
         frame.Locate(start, cellId, out int x, out int y, out Vector2 p0);
@@ -34,6 +35,7 @@ internal static class Touches
             BodySweep.SweepWalls(movers.Walls[j], offset, lo - offset, hi - offset, in move, ref hit);
             if (hit.T < 1f || hit.Depth > 0f)
             {
+                stoppedBy = movers.Ids[j] == stoppedBy ? 0 : stoppedBy; // named here
                 if (count < touched.Length)
                 {
                     touched[count] = movers.Ids[j];
@@ -41,6 +43,16 @@ internal static class Touches
 
                 count++;
             }
+        }
+
+        if (stoppedBy != 0)
+        {
+            if (count < touched.Length)
+            {
+                touched[count] = stoppedBy;
+            }
+
+            count++;
         }
 
         return count;

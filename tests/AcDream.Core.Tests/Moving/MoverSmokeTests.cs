@@ -2,7 +2,7 @@ using System.Numerics;
 using AcDream.Core.Physics;
 using Xunit.Abstractions;
 
-namespace AcDream.Core.Tests.Movers;
+namespace AcDream.Core.Tests.Moving;
 
 /// <summary>A creature (a cylinder of the game's human size) on open ground: a wall to a body and a point, its rules.</summary>
 public class MoverSmokeTests(ITestOutputHelper output)
