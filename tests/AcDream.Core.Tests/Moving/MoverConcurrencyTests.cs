@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Testing;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Moving;
@@ -43,18 +44,18 @@ public class MoverConcurrencyTests(ITestOutputHelper output)
             (Vector3 p, uint cell) = Creature(engine, i, f);
             if (f == 0)
             {
-                engine.Movers.Add((uint)(i + 1), MoverKit.Human, p, cell, MoverKit.Yaw(i), MoverState.Creature);
+                engine.Movers.Add((uint)(i + 1), MoverKit.Human, p, cell, MoverReference.Yaw(i), MoverState.Creature);
             }
             else
             {
-                engine.Movers.Move((uint)(i + 1), p, cell, MoverKit.Yaw(i + (f * 0.1)));
+                engine.Movers.Move((uint)(i + 1), p, cell, MoverReference.Yaw(i + (f * 0.1)));
             }
         }
 
         if (f == 0)
         {
-            engine.Movers.Add(5001, new MoverShape(MoverKit.SlabModel(1.2f, 2.2f)), engine.ToWorld(Landblock, new Vector3(6.35f, 11.5f, Ground)), 0x7A3B0001, MoverKit.Yaw(0.3), MoverState.Door);
-            engine.Movers.Add(5002, new MoverShape(MoverKit.SlabModel(1.2f, 2.2f)), engine.ToWorld(Landblock, new Vector3(60f, 100f, Ground)), 0x7A3B0001, Quaternion.Identity, MoverState.Door);
+            engine.Movers.Add(5001, new MoverShape(MoverReference.SlabModel(1.2f, 2.2f)), engine.ToWorld(Landblock, new Vector3(6.35f, 11.5f, Ground)), 0x7A3B0001, MoverReference.Yaw(0.3), MoverState.Door);
+            engine.Movers.Add(5002, new MoverShape(MoverReference.SlabModel(1.2f, 2.2f)), engine.ToWorld(Landblock, new Vector3(60f, 100f, Ground)), 0x7A3B0001, Quaternion.Identity, MoverState.Door);
         }
         else if (f % 10 == 3)
         {

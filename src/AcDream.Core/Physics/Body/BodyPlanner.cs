@@ -215,9 +215,10 @@ internal sealed class BodyPlanner(WorldFrame frame)
     {
         normal = default;
         if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place)
-            || (!place.Entry.HasSteep && !q.Lands.ReachInto(place.Entry).Meets(place.Local - new Vector2(body.Radius), place.Local + new Vector2(body.Radius))))
+            || (!place.Entry.HasSteep && !q.Lands.ReachInto(place.Entry).Meets(place.Local - new Vector2(body.Radius), place.Local + new Vector2(body.Radius))
+                && !WallSet.AnyMover(ref q.Lands, place.Entry, new WallBox(place.Local - new Vector2(body.Radius), place.Local + new Vector2(body.Radius), position.Z - depth, position.Z))))
         {
-            return float.NaN; // no face a fall may land on in its landblock, nor one reaching it across a seam
+            return float.NaN; // no face a fall may land on in its landblock, nor one reaching it across a seam, nor a mover's top
         }
 
         var hit = new CeilingHit { Z = position.Z - depth };

@@ -430,7 +430,7 @@ internal ref struct WallSet
                 _hit.Current = new WallSource(SurfaceKind.Mover, movers.Ids[index]);
                 if (steep)
                 {
-                    Overhead.Steep(movers.Walls[index], offset, in _rise, ref _hit);
+                    Overhead.Tops(movers.Walls[index], offset, in _rise, ref _hit);
                 }
                 else
                 {
