@@ -25,6 +25,7 @@ internal static class AccuracyReport
         BodyAccuracy.Run(o);
         ObjectAccuracy.Run(o);
         VerticalAccuracy.Run(o);
+        MoverAccuracy.Run(o);
     }
 
     private static string F(double v, string format = "0.###") => v.ToString(format, Inv);

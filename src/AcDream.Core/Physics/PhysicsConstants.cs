@@ -187,7 +187,7 @@ public static class PhysicsConstants
     public const float TouchReach = 0.001f;
 
     /// <summary>The size of the squares the registered movers are filed in by their origins, metres.</summary>
-    internal const float MoverGridCell = 4f;
+    internal const float MoverGridCell = 2f;
 
     /// <summary>
     /// Most outdoor objects one landblock may register (its <c>LandBlockInfo</c>'s objects and

@@ -27,14 +27,19 @@ public sealed partial class PhysicsEngine
         out MoveReport report)
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry, _movers.Hold(), 0);
+        var lands = new Neighbourhood(_registry);
+        if (_movers.Any)
+        {
+            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), 0);
+        }
+
         try
         {
             return Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
         }
         finally
         {
-            Movers.Release(lands.Movers);
+            lands.Release();
         }
     }
 
@@ -59,7 +64,12 @@ public sealed partial class PhysicsEngine
         uint moverId)
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry, _movers.Hold(), moverId);
+        var lands = new Neighbourhood(_registry);
+        if (_movers.Any)
+        {
+            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), moverId);
+        }
+
         try
         {
             var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
@@ -67,7 +77,7 @@ public sealed partial class PhysicsEngine
         }
         finally
         {
-            Movers.Release(lands.Movers);
+            lands.Release();
         }
     }
 
@@ -102,7 +112,12 @@ public sealed partial class PhysicsEngine
         out MoveReport report)
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry, _movers.Hold(), moverId);
+        var lands = new Neighbourhood(_registry);
+        if (_movers.Any)
+        {
+            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), moverId);
+        }
+
         try
         {
             ResolveResult result = Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
@@ -112,7 +127,7 @@ public sealed partial class PhysicsEngine
         }
         finally
         {
-            Movers.Release(lands.Movers);
+            lands.Release();
         }
     }
 

@@ -176,7 +176,12 @@ public sealed partial class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         MovementOptions none = default; // no effects: the spec's engine
-        var lands = new Neighbourhood(_registry, _movers.Hold(), 0);
+        var lands = new Neighbourhood(_registry);
+        if (_movers.Any)
+        {
+            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in none), 0);
+        }
+
         try
         {
             var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
@@ -184,7 +189,7 @@ public sealed partial class PhysicsEngine
         }
         finally
         {
-            Movers.Release(lands.Movers);
+            lands.Release();
         }
     }
 
@@ -211,7 +216,12 @@ public sealed partial class PhysicsEngine
         in MovementOptions options)
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry, _movers.Hold(), 0);
+        var lands = new Neighbourhood(_registry);
+        if (_movers.Any)
+        {
+            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), 0);
+        }
+
         try
         {
             var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
@@ -219,9 +229,13 @@ public sealed partial class PhysicsEngine
         }
         finally
         {
-            Movers.Release(lands.Movers);
+            lands.Release();
         }
     }
+
+    /// <summary>How far from its start a call's queries of the movers reach (metres, seen from above): its move, its body's radius and a metre.</summary>
+    private static float MoverReach(Vector3 delta, in MovementOptions options) =>
+        new Vector2(delta.X, delta.Y).Length() + (options.Body is MoverBody body ? body.Radius : 0f) + 1f;
 
     /// <summary>
     /// The move of a checked call: a body's in three dimensions when an effect asks (<see cref="BodyMotion"/>, with the

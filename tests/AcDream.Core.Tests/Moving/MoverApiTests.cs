@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Testing;
 
 namespace AcDream.Core.Tests.Moving;
 
@@ -59,7 +60,7 @@ public class MoverApiTests
             long before = GC.GetAllocatedBytesForCurrentThread();
             for (uint i = 1; i <= 1000; i++)
             {
-                engine.Movers.Move(i, MoverSmokeTests.World(engine, new Vector2((i % 180) + (f * 0.1f), i / 6f)), MoverSmokeTests.Outdoor, MoverKit.Yaw(f));
+                engine.Movers.Move(i, MoverSmokeTests.World(engine, new Vector2((i % 180) + (f * 0.1f), i / 6f)), MoverSmokeTests.Outdoor, MoverReference.Yaw(f));
             }
 
             engine.Movers.Commit();

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Testing;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Moving;
@@ -13,7 +14,7 @@ public class MoverConcurrencyTests(ITestOutputHelper output)
 {
     private const uint Landblock = 0x7A3BFFFF, East = 0x7B3BFFFF;
     private const float Ground = 50f;
-    private const int Creatures = 1000, MaxFrames = 4000, CallsPerReader = 20000;
+    private const int Creatures = 1000, MaxFrames = 4000, CallsPerReader = 20000, Warm = 2000;
 
     private readonly record struct Call(Vector3 Start, Vector3 Delta, int Kind, ResolveResult Answer, int Touched, uint First, MoveReport Report, int From, int To);
 
@@ -43,18 +44,18 @@ public class MoverConcurrencyTests(ITestOutputHelper output)
             (Vector3 p, uint cell) = Creature(engine, i, f);
             if (f == 0)
             {
-                engine.Movers.Add((uint)(i + 1), MoverKit.Human, p, cell, MoverKit.Yaw(i), MoverState.Creature);
+                engine.Movers.Add((uint)(i + 1), MoverKit.Human, p, cell, MoverReference.Yaw(i), MoverState.Creature);
             }
             else
             {
-                engine.Movers.Move((uint)(i + 1), p, cell, MoverKit.Yaw(i + (f * 0.1)));
+                engine.Movers.Move((uint)(i + 1), p, cell, MoverReference.Yaw(i + (f * 0.1)));
             }
         }
 
         if (f == 0)
         {
-            engine.Movers.Add(5001, new MoverShape(MoverKit.SlabModel(1.2f, 2.2f)), engine.ToWorld(Landblock, new Vector3(6.35f, 11.5f, Ground)), 0x7A3B0001, MoverKit.Yaw(0.3), MoverState.Door);
-            engine.Movers.Add(5002, new MoverShape(MoverKit.SlabModel(1.2f, 2.2f)), engine.ToWorld(Landblock, new Vector3(60f, 100f, Ground)), 0x7A3B0001, Quaternion.Identity, MoverState.Door);
+            engine.Movers.Add(5001, new MoverShape(MoverReference.SlabModel(1.2f, 2.2f)), engine.ToWorld(Landblock, new Vector3(6.35f, 11.5f, Ground)), 0x7A3B0001, MoverReference.Yaw(0.3), MoverState.Door);
+            engine.Movers.Add(5002, new MoverShape(MoverReference.SlabModel(1.2f, 2.2f)), engine.ToWorld(Landblock, new Vector3(60f, 100f, Ground)), 0x7A3B0001, Quaternion.Identity, MoverState.Door);
         }
         else if (f % 10 == 3)
         {
@@ -100,9 +101,14 @@ public class MoverConcurrencyTests(ITestOutputHelper output)
                 var random = new Random(100 + thread);
                 Span<uint> touched = stackalloc uint[8];
                 Call[] mine = calls[thread];
-                long before = GC.GetAllocatedBytesForCurrentThread();
+                long before = 0;
                 for (int n = 0; n < CallsPerReader; n++)
                 {
+                    if (n == Warm)
+                    {
+                        before = GC.GetAllocatedBytesForCurrentThread(); // measured after the first calls (the runtime's first-call work)
+                    }
+
                     var start = engine.ToWorld(Landblock, new Vector3(2f + (float)(random.NextDouble() * 188), 2f + (float)(random.NextDouble() * 180), Ground));
                     double a = random.NextDouble() * 2 * Math.PI, length = random.NextDouble() * 2.5;
                     var delta = new Vector3((float)(Math.Cos(a) * length), (float)(Math.Sin(a) * length), 0f);
@@ -142,7 +148,7 @@ public class MoverConcurrencyTests(ITestOutputHelper output)
         }
 
         exceptions.Should().Be(0);
-        allocated.Should().AllSatisfy(bytes => bytes.Should().Be(0, "a Resolve allocates nothing, movers or not"));
+        allocated.Should().AllSatisfy(bytes => bytes.Should().Be(0, $"a Resolve allocates nothing, movers or not ({CallsPerReader - Warm} calls measured per thread)"));
 
         // The replay: one engine, the writer's frames one by one; each call is answered again on every state in its window.
         PhysicsEngine replay = World();

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Testing;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Moving;
@@ -51,7 +52,7 @@ public class MoverContactTests(ITestOutputHelper output)
                 for (int i = 0; i < (int)(10f / (speed * Frame)) + 2; i++)
                 {
                     at = engine.Resolve(at.Position, at.CellId, new Vector3(dir * speed * Frame, 0f), 0.6f, MovementOptions.Player);
-                    double apart = MoverKit.Apart(at.Position, creature);
+                    double apart = MoverReference.Apart(at.Position, creature);
                     worst = Math.Min(worst, apart);
                     apart.Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"direction {d}, offset {offset}, frame {i}: {at}");
                     slid += at.Outcome == ResolveOutcome.Slid ? 1 : 0;
@@ -89,11 +90,11 @@ public class MoverContactTests(ITestOutputHelper output)
                 creature = engine.Resolve(creature.Position, creature.CellId, new Vector3(-dir * speed * Frame, 0f), 0.6f, MovementOptions.Player, 2u);
                 engine.Movers.Move(2, creature.Position, creature.CellId, Quaternion.Identity);
                 engine.Movers.Commit();
-                MoverKit.Apart(body.Position, creature.Position).Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"run {d}, frame {i}, creature: {creature}");
+                MoverReference.Apart(body.Position, creature.Position).Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"run {d}, frame {i}, creature: {creature}");
                 body = engine.Resolve(body.Position, body.CellId, new Vector3(dir * speed * Frame, 0f), 0.6f, MovementOptions.Player, 1u);
                 engine.Movers.Move(1, body.Position, body.CellId, Quaternion.Identity);
                 engine.Movers.Commit();
-                double apart = MoverKit.Apart(body.Position, creature.Position);
+                double apart = MoverReference.Apart(body.Position, creature.Position);
                 worst = Math.Min(worst, apart);
                 apart.Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"run {d}, frame {i}, body: {body}");
             }
@@ -115,7 +116,7 @@ public class MoverContactTests(ITestOutputHelper output)
         PhysicsEngine engine = Field(frame);
         const float half = 0.6f;
         Vector3 hinge = At(engine, Axis);
-        engine.Movers.Add(9, new MoverShape(MoverKit.SlabModel(2 * half, 2.2f)), hinge, Outdoor, MoverKit.Yaw(yaw), MoverState.Door);
+        engine.Movers.Add(9, new MoverShape(MoverReference.SlabModel(2 * half, 2.2f)), hinge, Outdoor, MoverReference.Yaw(yaw), MoverState.Door);
         engine.Movers.Commit();
         var across = new Vector2((float)-Math.Sin(yaw), (float)Math.Cos(yaw)); // the slab's +Y, in the world
         double worst = double.MaxValue;
@@ -126,7 +127,7 @@ public class MoverContactTests(ITestOutputHelper output)
             for (int i = 0; i < frames; i++)
             {
                 at = engine.Resolve(at.Position, at.CellId, new Vector3(dir * speed * Frame, 0f), 0.6f, MovementOptions.Player);
-                double gap = MoverKit.ToSlab(at.Position, hinge, yaw, half);
+                double gap = MoverReference.ToSlab(at.Position, hinge, yaw, half);
                 if (engine.Movers.GetDoorState(9) == DoorState.Closed)
                 {
                     worst = Math.Min(worst, gap);
@@ -175,6 +176,43 @@ public class MoverContactTests(ITestOutputHelper output)
         worst.Should().BeLessThan(MoverKit.HumanRadius + 0.01, "the walkers reached the slab");
     }
 
+    [Theory]
+    [InlineData("centred", 0f)]
+    [InlineData("centred", 0.3f)]
+    [InlineData("global", 0.7f)]
+    [InlineData("global", 0.95f)]
+    public void A_body_falling_onto_a_creature_is_held_on_its_top_and_slides_off(string frame, float offset)
+    {
+        // A body does not stand on a mover: it is held in the air on the creature's top and slides off outward.
+        PhysicsEngine engine = Field(frame);
+        Vector3 creature = At(engine, Axis);
+        engine.Movers.Add(2, MoverKit.Human, creature, Outdoor, Quaternion.Identity, MoverState.Creature);
+        engine.Movers.Commit();
+        var at = new ResolveResult(creature + new Vector3(offset, 0f, 2.5f), Outdoor, false);
+        float vz = 0f;
+        int held = 0;
+        for (int f = 0; f < 150; f++)
+        {
+            vz = at.IsOnGround ? 0f : vz - (9.8f * Frame);
+            at = engine.Resolve(at.Position, at.CellId, new Vector3(0f, 0f, vz * Frame), 0.6f, MovementOptions.Player);
+            string what = $"offset {offset}, frame {f}: {at}";
+            if (at.Position.Z < creature.Z + MoverKit.HumanHeight - 0.001f)
+            {
+                MoverReference.Apart(at.Position, creature).Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"{what}: below the creature's top, beside it");
+            }
+            else if (MoverReference.Apart(at.Position, creature) < Touch)
+            {
+                at.IsOnGround.Should().BeFalse($"{what}: held on a mover, not standing");
+                held++;
+            }
+        }
+
+        output.WriteLine($"offset {offset}: held on the top for {held} frames, ended {at}");
+        at.IsOnGround.Should().BeTrue($"it slid off and landed: {at}");
+        at.Position.Z.Should().Be(Ground);
+        held.Should().BeGreaterThan(0, "it came down on the creature's top");
+    }
+
     [Fact]
     public void A_creature_across_a_seam_stops_a_body_in_the_neighbour_landblock()
     {
@@ -189,10 +227,10 @@ public class MoverContactTests(ITestOutputHelper output)
         for (int i = 0; i < 40; i++)
         {
             at = engine.Resolve(at.Position, at.CellId, new Vector3(0.2f, 0f, 0f), 0.6f, MovementOptions.Player);
-            MoverKit.Apart(at.Position, creature).Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"frame {i}: {at}");
+            MoverReference.Apart(at.Position, creature).Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"frame {i}: {at}");
         }
 
-        MoverKit.Apart(at.Position, creature).Should().BeLessThan(Touch + 0.01, $"it reached the creature: {at}");
+        MoverReference.Apart(at.Position, creature).Should().BeLessThan(Touch + 0.01, $"it reached the creature: {at}");
         ResolveResult point = engine.Resolve(engine.ToWorld(Landblock, new Vector3(190f, 96f, Ground)), Outdoor, new Vector3(3f, 0f, 0f), 0.6f);
         point.Outcome.Should().Be(ResolveOutcome.Wall, $"a point crossing it across the seam: {point}");
     }
@@ -213,7 +251,7 @@ public class MoverContactTests(ITestOutputHelper output)
         for (int i = 0; i < 40; i++)
         {
             at = engine.Resolve(at.Position, at.CellId, new Vector3(0f, 0.15f, 0f), 0.6f, MovementOptions.Player, 0u, [], out _, out MoveReport report);
-            MoverKit.Apart(at.Position, creature).Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"frame {i}: {at}");
+            MoverReference.Apart(at.Position, creature).Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"frame {i}: {at}");
             stopped += report.Wall.Kind == SurfaceKind.Mover ? 1 : 0;
         }
 

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Testing;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Moving;
@@ -34,7 +35,7 @@ public class MoverInvariantTests(ITestOutputHelper output)
         for (uint i = 1; i <= 60; i++)
         {
             var p = engine.ToWorld(landblock, new Vector3(85f + (float)(random.NextDouble() * 20), 85f + (float)(random.NextDouble() * 20), ground));
-            engine.Movers.Add(i, MoverKit.Human, p, cell, MoverKit.Yaw(random.NextDouble() * 6), MoverState.Creature);
+            engine.Movers.Add(i, MoverKit.Human, p, cell, MoverReference.Yaw(random.NextDouble() * 6), MoverState.Creature);
             creatures.Add(p);
         }
 
@@ -44,7 +45,7 @@ public class MoverInvariantTests(ITestOutputHelper output)
             while (true)
             {
                 var p = engine.ToWorld(landblock, new Vector3(85f + (float)(random.NextDouble() * 20), 85f + (float)(random.NextDouble() * 20), ground));
-                if (creatures.All(c => MoverKit.Apart(p, c) > 1.0))
+                if (creatures.All(c => MoverReference.Apart(p, c) > 1.0))
                 {
                     return new ResolveResult(p, cell, true);
                 }
@@ -64,14 +65,14 @@ public class MoverInvariantTests(ITestOutputHelper output)
             r.IsOnGround.Should().Be(Math.Abs(r.Position.Z - ground) <= PhysicsConstants.GroundTolerance, what);
             foreach (Vector3 c in creatures)
             {
-                double apart = MoverKit.Apart(r.Position, c);
+                double apart = MoverReference.Apart(r.Position, c);
                 nearest = Math.Min(nearest, apart);
                 apart.Should().BeGreaterThanOrEqualTo(0.96 - 0.001, what);
             }
 
             // The reference: the body's straight path without movers, swept against every creature in double precision.
             ResolveResult alone = bare.Resolve(at.Position, at.CellId, delta, 0.6f, MovementOptions.Player);
-            if (Clearance(at.Position, alone.Position, creatures) > 0.96 + 0.01)
+            if (creatures.Min(c => MoverReference.SegmentTo(at.Position, alone.Position, c)) > 0.96 + 0.01)
             {
                 // Within one sweep step the body's free path is the point move's, bit for bit; a longer one aims its
                 // sub-steps along the planned path (as it does beside any wall), which may round differently.
@@ -102,20 +103,5 @@ public class MoverInvariantTests(ITestOutputHelper output)
         output.WriteLine($"seed {seed}, {frame}: {compared} moves, {free} free and equal to the bare engine, {met} near a creature; nearest centre distance {nearest:F6} m");
         free.Should().BeGreaterThan(300);
         met.Should().BeGreaterThan(200, "the walks came near the creatures");
-    }
-
-    /// <summary>The least distance seen from above between the segment <paramref name="a"/>..<paramref name="b"/> and each creature's axis, in double precision.</summary>
-    private static double Clearance(Vector3 a, Vector3 b, List<Vector3> creatures)
-    {
-        double least = double.MaxValue;
-        (double ax, double ay, double dx, double dy) = (a.X, a.Y, (double)b.X - a.X, (double)b.Y - a.Y);
-        double len2 = (dx * dx) + (dy * dy);
-        foreach (Vector3 c in creatures)
-        {
-            double t = len2 == 0 ? 0 : Math.Clamp((((c.X - ax) * dx) + ((c.Y - ay) * dy)) / len2, 0, 1);
-            least = Math.Min(least, Math.Sqrt(Math.Pow(ax + (t * dx) - c.X, 2) + Math.Pow(ay + (t * dy) - c.Y, 2)));
-        }
-
-        return least;
     }
 }

@@ -49,7 +49,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
             float grow = move.Radius + PhysicsConstants.ContactTolerance;
             Vector2 end = local + q.Delta;
             if (open.IsOpen(Vector2.Min(local, end) - new Vector2(grow), Vector2.Max(local, end) + new Vector2(grow), move.ZLow, move.ZHigh, local - new Vector2(reach), local + new Vector2(reach))
-                && !WallSet.AnyMover(ref q.Lands, entry, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh)))
+                && !WallSet.TouchesMover(ref q.Lands, entry, in move))
             {
                 (points[0], points[1], path.Count) = (local, end, 2);
                 q.Open = entry.Cells[cellIndex] is { Objects.Length: 0 } cell && !float.IsNaN(cell.FloorLevel);
@@ -87,9 +87,11 @@ internal sealed class BodyPlanner(WorldFrame frame)
         // The box the body sweeps (its start and end grown by its radius, skin and the contact
         // tolerance): with no wall in it the body meets none on its way, so it does not slide, and its
         // move is the point's.
-        float grow = body.Radius + Skin(lbX, lbY, local, delta.Length() + body.Radius) + PhysicsConstants.ContactTolerance;
+        float skin = Skin(lbX, lbY, local, delta.Length() + body.Radius);
+        float grow = body.Radius + skin + PhysicsConstants.ContactTolerance;
         Vector2 min = Vector2.Min(local, local + delta) - new Vector2(grow), max = Vector2.Max(local, local + delta) + new Vector2(grow);
-        bool open = !WallSet.AnyOutdoors(ref q.Lands, entry, min, max);
+        bool open = !WallSet.AnyOutdoors(ref q.Lands, entry, min, max)
+            && !WallSet.TouchesMover(ref q.Lands, entry, BodyMove.Of(local, delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height));
         q.Open = open && !entry.FloorsBeyondWalls && !q.Lands.ReachInto(entry).Meets(min, max);
         return open;
     }
@@ -213,9 +215,10 @@ internal sealed class BodyPlanner(WorldFrame frame)
     {
         normal = default;
         if (!Locator.TryFind(frame, ref q.Lands, position, cellId, out Place place)
-            || (!place.Entry.HasSteep && !q.Lands.ReachInto(place.Entry).Meets(place.Local - new Vector2(body.Radius), place.Local + new Vector2(body.Radius))))
+            || (!place.Entry.HasSteep && !q.Lands.ReachInto(place.Entry).Meets(place.Local - new Vector2(body.Radius), place.Local + new Vector2(body.Radius))
+                && !WallSet.AnyMover(ref q.Lands, place.Entry, new WallBox(place.Local - new Vector2(body.Radius), place.Local + new Vector2(body.Radius), position.Z - depth, position.Z))))
         {
-            return float.NaN; // no face a fall may land on in its landblock, nor one reaching it across a seam
+            return float.NaN; // no face a fall may land on in its landblock, nor one reaching it across a seam, nor a mover's top
         }
 
         var hit = new CeilingHit { Z = position.Z - depth };

@@ -125,6 +125,28 @@ internal static class Overhead
     }
 
     /// <summary>
+    /// The highest top of the upright cylinders of <paramref name="walls"/> (a mover's, placed) under the falling disc
+    /// <paramref name="fall"/> in the band above <c>hit.Z</c>: a body does not stand on a mover. Held on its top in the air,
+    /// it slides off outward, as off a face of normal Z 0.5 (between <see cref="PhysicsConstants.LandingZ"/> and
+    /// <see cref="PhysicsConstants.FloorZ"/>) turned away from the axis (+X when over it).
+    /// </summary>
+    public static void Tops(CellWalls walls, Vector2 offset, in BodyRise fall, ref CeilingHit hit)
+    {
+        const float rise = 0.5f, run = 0.8660254f; // a normal 60° from the vertical
+        Vector2 c = fall.Centre - offset;
+        foreach (ref readonly WallPolygon w in walls.Polygons.AsSpan())
+        {
+            float reach = fall.Radius + w.Radius;
+            Vector2 d = c - w.A;
+            if (w.Radius > 0f && w.ZMax > hit.Z && w.ZMax <= fall.Top && d.LengthSquared() < reach * reach)
+            {
+                Vector2 away = d == Vector2.Zero ? Vector2.UnitX : Vector2.Normalize(d);
+                (hit.Z, hit.Normal, hit.Source) = (w.ZMax, new Vector3(away * run, rise), hit.Current);
+            }
+        }
+    }
+
+    /// <summary>
     /// The lowest Z of polygon <paramref name="v"/> (landblock-local) over the open disc of centre <paramref name="c"/> and
     /// radius <paramref name="r"/> seen from above, with the polygon's unit normal turned to face down (a vertical one's:
     /// straight down). False when the polygon is not over the disc.

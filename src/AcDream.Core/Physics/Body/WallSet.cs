@@ -187,7 +187,44 @@ internal ref struct WallSet
     public static bool AnyOutdoors(ref Neighbourhood lands, LandblockEntry entry, Vector2 lo, Vector2 hi)
     {
         var none = new Lister([]);
-        return !Collect(ref lands, entry, -1, new WallBox(lo, hi, float.NegativeInfinity, float.PositiveInfinity), ref none);
+        var box = new WallBox(lo, hi, float.NegativeInfinity, float.PositiveInfinity);
+        return !(Collect(entry, Own, -1, in box, ref none)
+            && (!lands.ReachInto(entry).Meets(box.Lo, box.Hi) || CollectAcross(ref lands, entry, in box, ref none)));
+    }
+
+    /// <summary>
+    /// Whether the body's sweep <paramref name="move"/> (the frame of <paramref name="entry"/>) touches a solid mover, or
+    /// starts overlapping one: movers near a move but clear of its sweep leave it on open ground.
+    /// </summary>
+    public static bool TouchesMover(ref Neighbourhood lands, LandblockEntry entry, in BodyMove move)
+    {
+        if (lands.Movers is not MoverFrame movers)
+        {
+            return false;
+        }
+
+        float grow = move.Radius + PhysicsConstants.ContactTolerance;
+        Vector2 lo = Vector2.Min(move.P, move.P + move.D) - new Vector2(grow), hi = Vector2.Max(move.P, move.P + move.D) + new Vector2(grow);
+        return MoverTouch(ref lands, movers, entry, in move, lo, hi);
+    }
+
+    [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers near
+    private static bool MoverTouch(ref Neighbourhood lands, MoverFrame movers, LandblockEntry entry, in BodyMove move, Vector2 lo, Vector2 hi)
+    {
+        var hit = WallHit.None;
+        for (Neighbourhood.MoverCursor near = lands.MoversNear(entry.X, entry.Y, new WallBox(lo, hi, move.ZLow, move.ZHigh)); near.MoveNext();)
+        {
+            if (lands.Blocks(near.Current))
+            {
+                BodySweep.SweepWalls(movers.Walls[near.Current], near.Offset, lo - near.Offset, hi - near.Offset, in move, ref hit);
+                if (hit.T < 1f || hit.Depth > 0f)
+                {
+                    return true;
+                }
+            }
+        }
+
+        return false;
     }
 
     /// <summary>
@@ -220,17 +257,14 @@ internal ref struct WallSet
     private static bool Movers<T>(ref Neighbourhood lands, LandblockEntry entry, in WallBox box, ref T sink)
         where T : ISourceSink, allows ref struct
     {
-        if (lands.Movers is not MoverFrame movers)
+        if (lands.Movers is null)
         {
             return true;
         }
 
-        for (MoverFrame.Near near = movers.Around(entry.X, entry.Y, box.Lo, box.Hi); near.MoveNext();)
+        for (Neighbourhood.MoverCursor near = lands.MoversNear(entry.X, entry.Y, box); near.MoveNext();)
         {
-            int j = near.Current;
-            if (movers.TryOffset(j, entry.X, entry.Y, out Vector2 offset, out int slot) && lands.Blocks(j)
-                && new WallBounds(movers.Walls[j].Min, movers.Walls[j].Max, movers.Walls[j].ZMin, movers.Walls[j].ZMax).Meets(in box, offset)
-                && !sink.Add((slot << SlotShift) | MoverBit | j))
+            if (lands.Blocks(near.Current) && !sink.Add((near.Slot << SlotShift) | MoverBit | near.Current))
             {
                 return false;
             }
@@ -396,7 +430,7 @@ internal ref struct WallSet
                 _hit.Current = new WallSource(SurfaceKind.Mover, movers.Ids[index]);
                 if (steep)
                 {
-                    Overhead.Steep(movers.Walls[index], offset, in _rise, ref _hit);
+                    Overhead.Tops(movers.Walls[index], offset, in _rise, ref _hit);
                 }
                 else
                 {

@@ -14,6 +14,9 @@ internal sealed class MoverFrame
     /// <summary>How many calls hold this frame; the writer rewrites a frame only when none does and it is not current.</summary>
     public int Readers;
 
+    /// <summary>Odd while the writer rewrites this frame, even otherwise, one more at each change: a call that reads without holding (<see cref="Occupied"/>) checks it did not change.</summary>
+    public int Sequence;
+
     public int Count;
     public uint[] Ids = [];
     public MoverState[] States = [];
@@ -38,6 +41,13 @@ internal sealed class MoverFrame
     /// <summary>The furthest any mover's walls reach from its origin, seen from above, metres.</summary>
     public float Reach;
 
+    /// <summary>
+    /// Which outdoor cells (24 m squares, bit 8·x + y) of a landblock any mover's walls reach into: the landblock's index
+    /// + 1 in <see cref="Landblocks"/> at the slot of its hash (linear probing; 0: empty), its bits in <see cref="Occupancy"/>.
+    /// </summary>
+    public int[] Landblocks = [];
+    public ulong[] Occupancy = [];
+
     public const int SquaresPerLandblock = (int)(PhysicsConstants.LandblockSize / PhysicsConstants.MoverGridCell);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -61,6 +71,72 @@ internal sealed class MoverFrame
         }
 
         return MoverState.Unregistered;
+    }
+
+    /// <summary>
+    /// Whether any mover's walls may reach into the box <paramref name="lo"/>..<paramref name="hi"/> (the frame of landblock
+    /// x, y; it may cross into the neighbours): one look at the outdoor cells it covers.
+    /// </summary>
+    public bool Occupied(int x, int y, Vector2 lo, Vector2 hi)
+    {
+        const float size = PhysicsConstants.LandblockSize;
+        (int[] keys, ulong[] bits) = (Landblocks, Occupancy); // each read once: a call may read a frame it does not hold
+        if (keys.Length != bits.Length)
+        {
+            return true; // (torn: being rewritten)
+        }
+
+        for (int dx = lo.X < 0f ? -1 : 0; dx <= (hi.X > size ? 1 : 0); dx++)
+        {
+            for (int dy = lo.Y < 0f ? -1 : 0; dy <= (hi.Y > size ? 1 : 0); dy++)
+            {
+                var offset = new Vector2(dx * size, dy * size);
+                if ((Cells(lo - offset, hi - offset) & OccupancyOf(keys, bits, x + dx, y + dy)) != 0)
+                {
+                    return true;
+                }
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>The bits of the outdoor cells of one landblock a box (its frame) covers.</summary>
+    public static ulong Cells(Vector2 lo, Vector2 hi)
+    {
+        const float cell = PhysicsConstants.LandblockSize / PhysicsConstants.CellsPerSide;
+        if (hi.X < 0f || hi.Y < 0f || lo.X > PhysicsConstants.LandblockSize || lo.Y > PhysicsConstants.LandblockSize)
+        {
+            return 0;
+        }
+
+        int x0 = Math.Clamp((int)(lo.X / cell), 0, 7), x1 = Math.Clamp((int)(hi.X / cell), 0, 7);
+        int y0 = Math.Clamp((int)(lo.Y / cell), 0, 7), y1 = Math.Clamp((int)(hi.Y / cell), 0, 7);
+        ulong column = ((2UL << y1) - 1) & ~((1UL << y0) - 1); // bits y0..y1
+        ulong bits = 0;
+        for (int cx = x0; cx <= x1; cx++)
+        {
+            bits |= column << (8 * cx);
+        }
+
+        return bits;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static int LandblockSlot(int key, int length) => (int)((uint)key * 0x9E3779B1u) & (length - 1);
+
+    private static ulong OccupancyOf(int[] keys, ulong[] bits, int x, int y)
+    {
+        int key = CellIds.LandblockIndex(Math.Clamp(x, 0, PhysicsConstants.MaxLandblockIndex), Math.Clamp(y, 0, PhysicsConstants.MaxLandblockIndex)) + 1;
+        for (int at = LandblockSlot(key, keys.Length), n = 0; keys[at] != 0 && n < keys.Length; at = (at + 1) & (keys.Length - 1), n++)
+        {
+            if (keys[at] == key)
+            {
+                return bits[at];
+            }
+        }
+
+        return 0;
     }
 
     /// <summary>The movers whose walls' bounds may meet the box <paramref name="lo"/>..<paramref name="hi"/> (the frame of landblock x, y), each once or more.</summary>

@@ -213,8 +213,10 @@ public sealed class Movers
             }
 
             MoverFrame next = Spare();
+            Interlocked.Increment(ref next.Sequence); // odd: being written (a call reading it unheld sees the change)
             Fill(next);
             HoldDoors(next);
+            Interlocked.Increment(ref next.Sequence);
             Interlocked.Exchange(ref _current, next); // (a full fence: the frame is written before it is seen)
         }
     }
@@ -246,6 +248,24 @@ public sealed class Movers
 
     /// <summary>Whether any mover is committed (one read; a call that finds none reads nothing else of the movers).</summary>
     internal bool Any => Volatile.Read(ref _current) is not null;
+
+    /// <summary>
+    /// Whether the committed state has no mover whose walls reach into the box (the frame of landblock x, y), read without
+    /// holding it: true only when the state read was whole (its sequence even and unchanged across the read). False may
+    /// also mean "look again, holding it".
+    /// </summary>
+    internal bool NoneNear(int x, int y, Vector2 lo, Vector2 hi)
+    {
+        if (Volatile.Read(ref _current) is not MoverFrame frame)
+        {
+            return true;
+        }
+
+        int sequence = Volatile.Read(ref frame.Sequence);
+        bool occupied = frame.Occupied(x, y, lo, hi);
+        Volatile.ReadBarrier(); // the reads above complete before the sequence is read again
+        return !occupied && (sequence & 1) == 0 && Volatile.Read(ref frame.Sequence) == sequence;
+    }
 
     private MoverFrame Spare()
     {
@@ -345,6 +365,7 @@ public sealed class Movers
             f.Order[--heads[buckets[i]]] = i; // from the back: each bucket's end becomes its start, in the movers' order
         }
 
+        Occupy(f, 4 * size); // (each mover reaches into at most four landblocks)
         Array.Clear(f.ById);
         for (int i = 0; i < n; i++)
         {
@@ -355,6 +376,43 @@ public sealed class Movers
             }
 
             f.ById[at] = i + 1;
+        }
+    }
+
+    /// <summary>Marks in each landblock's bits the outdoor cells every mover's walls reach into (its own and its neighbours').</summary>
+    private static void Occupy(MoverFrame f, int size)
+    {
+        if (f.Landblocks.Length != size)
+        {
+            (f.Landblocks, f.Occupancy) = (new int[size], new ulong[size]);
+        }
+
+        Array.Clear(f.Landblocks);
+        const float side = PhysicsConstants.LandblockSize;
+        for (int i = 0; i < f.Count; i++)
+        {
+            CellWalls w = f.Walls[i];
+            for (int dx = w.Min.X < 0f ? -1 : 0; dx <= (w.Max.X > side ? 1 : 0); dx++)
+            {
+                for (int dy = w.Min.Y < 0f ? -1 : 0; dy <= (w.Max.Y > side ? 1 : 0); dy++)
+                {
+                    int x = f.LandblockX[i] + dx, y = f.LandblockY[i] + dy;
+                    if (!CellIds.IsInWorld(x, y))
+                    {
+                        continue;
+                    }
+
+                    var offset = new Vector2(dx * side, dy * side);
+                    int key = CellIds.LandblockIndex(x, y) + 1, at = MoverFrame.LandblockSlot(key, size);
+                    while (f.Landblocks[at] != 0 && f.Landblocks[at] != key)
+                    {
+                        at = (at + 1) & (size - 1);
+                    }
+
+                    f.Occupancy[at] = (f.Landblocks[at] == 0 ? 0 : f.Occupancy[at]) | MoverFrame.Cells(w.Min - offset, w.Max - offset);
+                    f.Landblocks[at] = key;
+                }
+            }
         }
     }
 

@@ -23,16 +23,11 @@ internal static class Touches
         var move = new BodyMove(p0, p1 - p0, radius, radius, 0f, zLow, zHigh);
         Vector2 lo = Vector2.Min(p0, p1) - new Vector2(radius), hi = Vector2.Max(p0, p1) + new Vector2(radius);
         int count = 0;
-        for (MoverFrame.Near near = movers.Around(x, y, lo, hi); near.MoveNext();)
+        for (Neighbourhood.MoverCursor near = lands.MoversNear(x, y, new WallBox(lo, hi, zLow, zHigh)); near.MoveNext();)
         {
             int j = near.Current;
-            if (movers.Ids[j] == lands.SelfId || !MoverState.Meets(in movers.States[j]) || !movers.TryOffset(j, x, y, out Vector2 offset, out _))
-            {
-                continue;
-            }
-
             var hit = WallHit.None;
-            BodySweep.SweepWalls(movers.Walls[j], offset, lo - offset, hi - offset, in move, ref hit);
+            BodySweep.SweepWalls(movers.Walls[j], near.Offset, lo - near.Offset, hi - near.Offset, in move, ref hit);
             if (hit.T < 1f || hit.Depth > 0f)
             {
                 stoppedBy = movers.Ids[j] == stoppedBy ? 0 : stoppedBy; // named here

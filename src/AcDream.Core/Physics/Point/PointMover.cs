@@ -62,13 +62,11 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
         var line = new StepLine(q.P0, q.P1, q.Z + q.StepUp);
         var hit = ObjectHit.Over(0f);
         uint met = 0;
-        for (MoverFrame.Near near = movers.Around(q.Entry.X, q.Entry.Y, line.Lo, line.Hi); near.MoveNext();)
+        for (Neighbourhood.MoverCursor near = q.Lands.MoversNear(q.Entry.X, q.Entry.Y, new WallBox(line.Lo, line.Hi, line.H, line.H)); near.MoveNext();)
         {
-            int j = near.Current;
-            if (q.Lands.Blocks(j) && movers.TryOffset(j, q.Entry.X, q.Entry.Y, out Vector2 offset, out _)
-                && line.Less(offset).FirstCrossing(movers.Walls[j], ref hit))
+            if (q.Lands.Blocks(near.Current) && line.Less(near.Offset).FirstCrossing(movers.Walls[near.Current], ref hit))
             {
-                met = movers.Ids[j];
+                met = movers.Ids[near.Current];
             }
         }
 

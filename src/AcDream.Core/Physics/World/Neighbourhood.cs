@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Diagnostics.CodeAnalysis;
 using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
@@ -26,32 +27,155 @@ internal struct Neighbourhood
 
     public Neighbourhood(LandblockRegistry registry) => _registry = registry;
 
-    /// <summary>The committed movers this call holds (null: none), and who is moving: its id (0: not a mover) and state.</summary>
-    public Neighbourhood(LandblockRegistry registry, MoverFrame? movers, uint self)
+    /// <summary>
+    /// Holds the committed movers for this call, for the mover <paramref name="self"/> (0: not a mover) starting at
+    /// <paramref name="start"/> in <paramref name="cellId"/>, whose queries all lie within <paramref name="reach"/> of its
+    /// start (metres, seen from above): when no mover's walls reach into that box the call reads no movers at all;
+    /// else the movers met there (not itself) are listed once, and every query of the call reads that list.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers committed
+    public void Meet(Movers movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self)
     {
-        _registry = registry;
-        Movers = movers;
-        if (movers is not null && self != 0)
+        frame.Locate(start, cellId, out int x, out int y, out Vector2 local);
+        Vector2 lo = local - new Vector2(reach), hi = local + new Vector2(reach);
+        if (movers.NoneNear(x, y, lo, hi) || movers.Hold() is not MoverFrame held)
         {
-            (SelfId, Self) = (self, movers.StateOf(self));
+            return; // no mover near in the state committed at the call's start: the call reads none
+        }
+
+        _held = held;
+        if (!held.Occupied(x, y, lo, hi))
+        {
+            return;
+        }
+
+        (_movers, _selfId, _self) = (held, self, self == 0 ? MoverState.Unregistered : held.StateOf(self));
+        int n = 0;
+        for (MoverFrame.Near near = held.Around(x, y, lo, hi); near.MoveNext();)
+        {
+            int j = near.Current;
+            CellWalls w = held.Walls[j];
+            if (held.Ids[j] == self || !MoverState.Meets(in held.States[j]) || !held.TryOffset(j, x, y, out Vector2 offset, out _)
+                || !new WallBounds(w.Min, w.Max, float.NegativeInfinity, float.PositiveInfinity).Meets(new WallBox(lo, hi, 0f, 0f), offset))
+            {
+                continue; // itself, not met, or not reaching into the call's box
+            }
+
+            if (n == MoverList.Capacity)
+            {
+                (n, _nearX, _nearY, _nearLo, _nearHi) = (-1, x, y, lo, hi); // more than the list holds: each query asks the grid
+                break;
+            }
+
+            _near[n++] = j;
+        }
+
+        _nearCount = n;
+    }
+
+    /// <summary>Lets go of the movers held for this call (<see cref="Meet"/>).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly void Release()
+    {
+        if (_held is not null)
+        {
+            Physics.Movers.Release(_held);
         }
     }
 
-    /// <summary>The committed movers this call reads, one whole state; null when there are none.</summary>
-    public readonly MoverFrame? Movers;
+    private MoverFrame? _held;
+    private MoverList _near;
+    private int _nearCount;
+    private int _nearX, _nearY;
+    private Vector2 _nearLo, _nearHi;
+
+    private MoverFrame? _movers;
+    private uint _selfId;
+    private MoverState _self;
+
+    /// <summary>The committed movers this call reads, one whole state; null when none is near it.</summary>
+    public readonly MoverFrame? Movers => _movers;
 
     /// <summary>The id of the mover that moves (skipped), or 0.</summary>
-    public readonly uint SelfId;
+    public readonly uint SelfId => _selfId;
 
-    /// <summary>The state of the mover that moves (the rules of who blocks whom read it).</summary>
-    public readonly MoverState Self;
-
-    /// <summary>Whether mover <paramref name="index"/> of <see cref="Movers"/> stops this call's move (not the mover itself, and solid to it).</summary>
+    /// <summary>Whether mover <paramref name="index"/> of <see cref="Movers"/> stops this call's move (it is met, and solid to the mover).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public readonly bool Blocks(int index) =>
-        Movers!.Ids[index] != SelfId && MoverState.Blocks(in Self, in Movers.States[index]);
+    public readonly bool Blocks(int index) => MoverState.Blocks(in _self, in _movers!.States[index]);
 
-    /// <summary>Landblock (<paramref name="x"/>, <paramref name="y"/>), as this call first read it; null when not registered or off the world.</summary>
+    /// <summary>The movers met by this call (not itself) whose walls meet <paramref name="box"/> (the frame of landblock x, y), each once.</summary>
+    [UnscopedRef]
+    public MoverCursor MoversNear(int x, int y, in WallBox box) => new(ref this, x, y, in box);
+
+    /// <summary>The movers of <see cref="MoversNear"/>: each with its walls' offset from the query's frame and its 3 × 3 slot there.</summary>
+    internal ref struct MoverCursor
+    {
+        private readonly ref Neighbourhood _lands;
+        private readonly WallBox _box;
+        private readonly int _x, _y;
+        private MoverFrame.Near _grid;
+        private int _i;
+
+        public MoverCursor(ref Neighbourhood lands, int x, int y, in WallBox box)
+        {
+            _lands = ref lands;
+            (_x, _y, _box, _i) = (x, y, box, 0);
+            _grid = lands._nearCount < 0 ? lands.Movers!.Around(lands._nearX, lands._nearY, lands._nearLo, lands._nearHi) : default;
+        }
+
+        public int Current { get; private set; }
+
+        public Vector2 Offset { get; private set; }
+
+        public int Slot { get; private set; }
+
+        public bool MoveNext()
+        {
+            MoverFrame movers = _lands.Movers!;
+            while (true)
+            {
+                int j;
+                if (_lands._nearCount >= 0)
+                {
+                    if (_i == _lands._nearCount)
+                    {
+                        return false;
+                    }
+
+                    j = _lands._near[_i++];
+                }
+                else
+                {
+                    if (!_grid.MoveNext())
+                    {
+                        return false;
+                    }
+
+                    j = _grid.Current;
+                    if (movers.Ids[j] == _lands.SelfId || !MoverState.Meets(in movers.States[j]))
+                    {
+                        continue;
+                    }
+                }
+
+                CellWalls w = movers.Walls[j];
+                if (movers.TryOffset(j, _x, _y, out Vector2 offset, out int slot) && new WallBounds(w.Min, w.Max, w.ZMin, w.ZMax).Meets(in _box, offset))
+                {
+                    (Current, Offset, Slot) = (j, offset, slot);
+                    return true;
+                }
+            }
+        }
+    }
+
+    [InlineArray(Capacity)]
+    private struct MoverList
+    {
+        public const int Capacity = 24;
+
+        private int _first;
+    }
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public LandblockEntry? Get(int x, int y)
     {
