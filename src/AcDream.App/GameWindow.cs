@@ -22,6 +22,9 @@ namespace AcDream.App;
 /// <see cref="LandBlockInfo"/> or a cell's static objects) that cannot be built is skipped with
 /// a warning; a landblock that cannot be built at all is not registered (the engine never holds half
 /// of one), is reported, and is requested again <see cref="RetryDelayFrames"/> frames later.
+/// The host's movers (creatures, the player, doors: <see cref="AddMover"/>, <see cref="MoveMover"/>) live in loaded
+/// landblocks: a landblock that unloads takes the movers whose cell is in it out of the engine with it, and the frame
+/// loop publishes the frame's changes to them once per frame (<see cref="CommitMovers"/>).
 /// </remarks>
 public sealed class GameWindow : IDisposable
 {
@@ -202,13 +205,58 @@ public sealed class GameWindow : IDisposable
         return true;
     }
 
+    /// <summary>
+    /// Registers a mover in the engine (<see cref="Movers.Add"/>) in a loaded landblock: the one of
+    /// <paramref name="cellId"/>, which unloading removes it with. Seen by <c>Resolve</c> from the next
+    /// <see cref="CommitMovers"/>. Frame thread only.
+    /// </summary>
+    /// <param name="id">Its id, not 0 and not registered.</param>
+    /// <param name="shape">Its walls in its own frame (metres, origin at its position).</param>
+    /// <param name="position">Its origin (a creature's feet), world metres.</param>
+    /// <param name="cellId">The cell it is in, <c>0xXXYYCCCC</c>, of a loaded landblock.</param>
+    /// <param name="orientation">A turn about Z.</param>
+    /// <param name="state">What it is and its bits (<see cref="MoverState"/>).</param>
+    /// <exception cref="InvalidOperationException">The cell's landblock is not loaded.</exception>
+    /// <exception cref="ArgumentException">The engine refuses an argument (<see cref="Movers.Add"/>).</exception>
+    public void AddMover(uint id, MoverShape shape, Vector3 position, uint cellId, Quaternion orientation, MoverState state)
+    {
+        if (!_loaded.Contains(CellIds.LandblockOf(cellId)))
+        {
+            throw new InvalidOperationException($"mover 0x{id:X8}: its cell 0x{cellId:X8} is in landblock 0x{CellIds.LandblockOf(cellId):X8}, which is not loaded.");
+        }
+
+        Physics.Movers.Add(id, shape, position, cellId, orientation, state);
+    }
+
+    /// <summary>
+    /// Moves a registered mover (<see cref="Movers.Move"/>: seen from the next <see cref="CommitMovers"/>); allocates
+    /// nothing. A move the engine resolved stays in loaded land, so its landblock is loaded. Frame thread only.
+    /// </summary>
+    /// <param name="id">A registered mover's id.</param>
+    /// <param name="position">Its origin, world metres.</param>
+    /// <param name="cellId">The cell it is now in, <c>0xXXYYCCCC</c>.</param>
+    /// <param name="orientation">A turn about Z.</param>
+    /// <exception cref="ArgumentException">The id is not registered (its landblock unloaded, say), or an argument is invalid.</exception>
+    public void MoveMover(uint id, Vector3 position, uint cellId, Quaternion orientation) => Physics.Movers.Move(id, position, cellId, orientation);
+
+    /// <summary>
+    /// Publishes the frame's changes to the movers (<see cref="Movers.Commit"/>): the frame loop calls it once per
+    /// frame; every <c>Resolve</c> after it sees them all, doors told to close are closed here once nothing overlaps
+    /// them. Frame thread only.
+    /// </summary>
+    public void CommitMovers() => Physics.Movers.Commit();
+
     /// <summary>The number of objects registered with each loaded landblock (<c>0xXXYYFFFF</c>), as of its last registration. Frame thread only.</summary>
     public IReadOnlyDictionary<uint, int> ObjectCounts => _objectCounts;
 
-    /// <summary>The unload path: removes a landblock from the engine (nothing happens if it is not registered).</summary>
+    /// <summary>
+    /// The unload path: removes a landblock from the engine (nothing happens if it is not registered), and the movers
+    /// whose cell is in it (<see cref="Movers.RemoveLandblock"/>; gone from the next <see cref="CommitMovers"/>).
+    /// </summary>
     internal void UnloadLandblockLocked(uint landblockId)
     {
         uint id = CellIds.LandblockOf(landblockId);
+        Physics.Movers.RemoveLandblock(id);
         Physics.RemoveLandblock(id);
         _objectCounts.Remove(id);
         if (_loaded.Remove(id))

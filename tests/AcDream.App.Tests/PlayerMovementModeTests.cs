@@ -432,6 +432,47 @@ public class PlayerMovementModeTests
         mode.Position.Z.Should().BeApproximately(90.001f, 1e-3f, "the cellar floor's Z");
     }
 
+    [Fact]
+    public void Update_WithAMoverId_PassesItsOwnCylinderStopsAtAnothersAndNamesItTouched()
+    {
+        PhysicsEngine engine = Flat(50);
+        var start = new Vector3(96f, 96f, 50f);
+        MoverShape cylinder = MoverShape.Cylinder(0.48f, 1.835f);
+        engine.Movers.Add(7u, cylinder, start, 0xA9B40025u, Quaternion.Identity, MoverState.Player);
+        engine.Movers.Add(8u, cylinder, start + new Vector3(0f, 2f, 0f), 0xA9B40025u, Quaternion.Identity, MoverState.Creature);
+        engine.Movers.Commit();
+        var mode = new PlayerMovementMode(engine, start, 0xA9B40025u, 0f, MovementOptions.Player) { MoverId = 7u };
+
+        var touched = new List<uint[]>();
+        for (int i = 0; i < 30; i++)
+        {
+            mode.Update(new MovementIntent(1f, 0f, 0f, false), Frame);
+            touched.Add(mode.Touched.ToArray());
+        }
+
+        mode.Position.Y.Should().BeApproximately(96f + 2f - 0.96f, 1e-3f, $"its own cylinder (mover 7, where it starts) does not stop it; mover 8's stops its body two radii short, at {mode.Position}");
+        touched[0].Should().BeEmpty("the first frame touches nothing but itself, which is not named");
+        touched[^1].Should().Equal([8u], "stopped at mover 8, it names it touched");
+        touched.Should().OnlyContain(t => !t.Contains(7u), "never itself");
+        new PlayerMovementMode(engine, start, 0xA9B40025u, 0f, MovementOptions.Player).Touched.Length.Should().Be(0, "without a mover id nothing is recorded");
+    }
+
+    [Fact]
+    public void UndoLastUpdate_PutsPositionCellFootingAndVerticalSpeedBack_KeepsTheHeading()
+    {
+        var mode = new PlayerMovementMode(Flat(50), new Vector3(96f, 96f, 50f), 0xA9B40025u, 0f, MovementOptions.Player);
+        mode.Update(new MovementIntent(1f, 0f, 0f, false), Frame);
+        (Vector3 position, uint cell, bool ground, float speed) = (mode.Position, mode.CellId, mode.IsOnGround, mode.VerticalSpeed);
+
+        mode.Update(new MovementIntent(1f, 0f, 0.5f, false, Jump: true), Frame);
+        mode.IsOnGround.Should().BeFalse("it jumped");
+        float heading = mode.Heading;
+        mode.UndoLastUpdate();
+
+        (mode.Position, mode.CellId, mode.IsOnGround, mode.VerticalSpeed).Should().Be((position, cell, ground, speed), "back where the frame found it");
+        mode.Heading.Should().Be(heading, "the turn stays");
+    }
+
     [Theory]
     [InlineData(100, 1f, 1.6357143f)]
     [InlineData(0, 1f, 0.35f)]

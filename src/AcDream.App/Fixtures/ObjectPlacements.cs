@@ -6,7 +6,8 @@ namespace AcDream.App.Fixtures;
 /// <summary>
 /// Where the real objects of <c>Fixtures/objects/</c> stand, as the dat would list them (the
 /// placements recorded in that folder's README): the Holtburg cottage's shell and the small building
-/// on its plinth in landblock 0xA9B4, and the outdoor staircase of eight stair pieces in 0xF682.
+/// on its plinth in landblock 0xA9B4, and the outdoor staircase of eight stair pieces in 0xF682; and
+/// the synthetic objects built here (the cellar stairs, the cottage's west door slab).
 /// </summary>
 public static class ObjectPlacements
 {
@@ -136,6 +137,96 @@ public static class ObjectPlacements
     /// </summary>
     public const float TopLandingZ = 93.8f;
 
+    /// <summary>The cottage's west door cell: its portal to the outdoors (0xFFFF, drawing polygon 4) is the doorway the west door closes.</summary>
+    public const uint CottageWestDoorCell = 0xA9B40145;
+
+    /// <summary>
+    /// Assumed (not game data): the mover id of the cottage's west door, 0x7A9B4145: the game's form of a static
+    /// object of landblock 0xA9B4 (0x7XXYYnnn), numbered here by its door cell.
+    /// </summary>
+    public const uint CottageWestDoor = 0x7A9B4145;
+
+    /// <summary>Synthetic GfxObj id (not game data) of the cottage's west door slab, built here in its doorway.</summary>
+    public const uint CottageWestDoorSlab = 0x01FFF145;
+
+    /// <summary>The back of a door slab in its own frame: −0.009 m along its Y (the game's door slab spans −0.009..0.252 m).</summary>
+    public const float DoorSlabBack = -0.009f;
+
+    /// <summary>The front of a door slab in its own frame: 0.252 m along its Y; the slab is 0.261 m thick.</summary>
+    public const float DoorSlabFront = 0.252f;
+
+    /// <summary>
+    /// A door slab closing the portal of <paramref name="doorCell"/> to <paramref name="otherCellId"/> (0xFFFF: the
+    /// outdoors), built from that portal's polygon, and the frame it stands in (landblock-local, metres). The slab's own
+    /// frame: +Y the portal's horizontal normal pointing into <paramref name="doorCell"/> (its polygons' centre's side),
+    /// +Z up, +X = Y × Z along the opening; its origin on the portal's plane, at the middle of the polygon's extent along X
+    /// and at its lowest point. The slab is a closed box of six physics polygons wound outward: X over the polygon's
+    /// extent along the opening, Y from <see cref="DoorSlabBack"/> to <see cref="DoorSlabFront"/>, Z from 0 to the
+    /// polygon's height. Its four sides are walls from both sides of the doorway (a closed box); its top is a floor.
+    /// </summary>
+    /// <exception cref="ArgumentException">The cell has no such portal, or its polygon is not upright.</exception>
+    public static (GfxObj Slab, Vector3 Origin, Quaternion Orientation) DoorSlab(CellFixtureReader.FixtureCell doorCell, ushort otherCellId, uint slabId)
+    {
+        ArgumentNullException.ThrowIfNull(doorCell);
+        int index = doorCell.EnvCell.CellPortals.FindIndex(p => p.OtherCellId == otherCellId);
+        if (index < 0)
+        {
+            throw new ArgumentException($"cell 0x{doorCell.CellId:X8} has no portal to 0x{otherCellId:X4}.", nameof(otherCellId));
+        }
+
+        Frame cell = doorCell.EnvCell.Position;
+        Vector3 Place(short vertexId) => cell.Origin + Vector3.Transform(doorCell.CellStruct.VertexArray.Vertices[(ushort)vertexId].Origin, cell.Orientation);
+        Vector3[] portal = [.. doorCell.CellStruct.Polygons[doorCell.EnvCell.CellPortals[index].PolygonId].VertexIds.Select(Place)];
+        Vector3[] walls = [.. doorCell.CellStruct.PhysicsPolygons.Values.SelectMany(p => p.VertexIds).Select(Place)];
+
+        Vector3 centre = Mean(portal), inside = Mean(walls);
+        Vector3 newell = Vector3.Zero;
+        for (int i = 0; i < portal.Length; i++)
+        {
+            Vector3 a = portal[i], b = portal[(i + 1) % portal.Length];
+            newell += Vector3.Cross(a, b);
+        }
+
+        var normal = Vector2.Normalize(new Vector2(newell.X, newell.Y));
+        if (!(MathF.Abs(newell.Z) < 1e-3f * newell.Length()))
+        {
+            throw new ArgumentException($"the portal of cell 0x{doorCell.CellId:X8} to 0x{otherCellId:X4} is not upright (normal {newell}).", nameof(doorCell));
+        }
+
+        normal = Vector2.Dot(normal, new Vector2(inside.X - centre.X, inside.Y - centre.Y)) < 0f ? -normal : normal;
+        var along = new Vector2(normal.Y, -normal.X); // +X = Y × Z
+        float xMin = portal.Min(v => Vector2.Dot(new Vector2(v.X - centre.X, v.Y - centre.Y), along));
+        float xMax = portal.Max(v => Vector2.Dot(new Vector2(v.X - centre.X, v.Y - centre.Y), along));
+        float zMin = portal.Min(v => v.Z), zMax = portal.Max(v => v.Z);
+        Vector2 middle = new Vector2(centre.X, centre.Y) + (along * ((xMin + xMax) / 2f));
+        var origin = new Vector3(middle, zMin);
+        Quaternion orientation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.Atan2(along.Y, along.X));
+
+        float half = (xMax - xMin) / 2f, height = zMax - zMin;
+        var slab = new GfxObj { Id = slabId, Flags = GfxObjFlags.HasPhysics };
+        var ids = new Dictionary<Vector3, short>();
+        var lo = new Vector3(-half, DoorSlabBack, 0f);
+        var hi = new Vector3(half, DoorSlabFront, height);
+        AddFace(slab, ids, [new(lo.X, lo.Y, lo.Z), new(hi.X, lo.Y, lo.Z), new(hi.X, hi.Y, lo.Z), new(lo.X, hi.Y, lo.Z)], -Vector3.UnitZ);
+        AddFace(slab, ids, [new(lo.X, lo.Y, hi.Z), new(hi.X, lo.Y, hi.Z), new(hi.X, hi.Y, hi.Z), new(lo.X, hi.Y, hi.Z)], Vector3.UnitZ);
+        AddFace(slab, ids, [new(lo.X, lo.Y, lo.Z), new(hi.X, lo.Y, lo.Z), new(hi.X, lo.Y, hi.Z), new(lo.X, lo.Y, hi.Z)], -Vector3.UnitY);
+        AddFace(slab, ids, [new(lo.X, hi.Y, lo.Z), new(hi.X, hi.Y, lo.Z), new(hi.X, hi.Y, hi.Z), new(lo.X, hi.Y, hi.Z)], Vector3.UnitY);
+        AddFace(slab, ids, [new(lo.X, lo.Y, lo.Z), new(lo.X, hi.Y, lo.Z), new(lo.X, hi.Y, hi.Z), new(lo.X, lo.Y, hi.Z)], -Vector3.UnitX);
+        AddFace(slab, ids, [new(hi.X, lo.Y, lo.Z), new(hi.X, hi.Y, lo.Z), new(hi.X, hi.Y, hi.Z), new(hi.X, lo.Y, hi.Z)], Vector3.UnitX);
+        return (slab, origin, orientation);
+
+        static Vector3 Mean(Vector3[] points)
+        {
+            Vector3 sum = Vector3.Zero;
+            foreach (Vector3 p in points)
+            {
+                sum += p;
+            }
+
+            return sum / points.Length;
+        }
+    }
+
     /// <summary>
     /// A closed solid running along Y between <paramref name="xFirst"/> and <paramref name="xSecond"/>: its
     /// top follows <paramref name="profile"/> ((y, z) in walking order, y never turning back; one quad per
@@ -177,35 +268,41 @@ public static class ObjectPlacements
         Face([new(xMin, yMin, bottomZ), new(xMax, yMin, bottomZ), new(xMax, yMax, bottomZ), new(xMin, yMax, bottomZ)], -Vector3.UnitZ);
         return gfxObj;
 
-        void Face(Vector3[] loop, Vector3 outward)
+        void Face(Vector3[] loop, Vector3 outward) => AddFace(gfxObj, ids, loop, outward);
+    }
+
+    /// <summary>
+    /// Adds one physics polygon to <paramref name="gfxObj"/>, its loop wound counter-clockwise seen from the
+    /// <paramref name="outward"/> side (reversed if need be), sharing equal vertices through <paramref name="ids"/>.
+    /// </summary>
+    private static void AddFace(GfxObj gfxObj, Dictionary<Vector3, short> ids, Vector3[] loop, Vector3 outward)
+    {
+        Vector3 n = Vector3.Zero;
+        for (int i = 0; i < loop.Length; i++)
         {
-            Vector3 n = Vector3.Zero;
-            for (int i = 0; i < loop.Length; i++)
-            {
-                Vector3 a = loop[i], b = loop[(i + 1) % loop.Length];
-                n += new Vector3((a.Y - b.Y) * (a.Z + b.Z), (a.Z - b.Z) * (a.X + b.X), (a.X - b.X) * (a.Y + b.Y));
-            }
-
-            if (Vector3.Dot(n, outward) < 0f)
-            {
-                Array.Reverse(loop);
-            }
-
-            var polygon = new Polygon();
-            foreach (Vector3 v in loop)
-            {
-                if (!ids.TryGetValue(v, out short vertexId))
-                {
-                    vertexId = (short)ids.Count;
-                    ids.Add(v, vertexId);
-                    gfxObj.VertexArray.Vertices.Add((ushort)vertexId, new SWVertex { Origin = v });
-                }
-
-                polygon.VertexIds.Add(vertexId);
-            }
-
-            gfxObj.PhysicsPolygons.Add((ushort)gfxObj.PhysicsPolygons.Count, polygon);
+            Vector3 a = loop[i], b = loop[(i + 1) % loop.Length];
+            n += new Vector3((a.Y - b.Y) * (a.Z + b.Z), (a.Z - b.Z) * (a.X + b.X), (a.X - b.X) * (a.Y + b.Y));
         }
+
+        if (Vector3.Dot(n, outward) < 0f)
+        {
+            Array.Reverse(loop);
+        }
+
+        var polygon = new Polygon();
+        foreach (Vector3 v in loop)
+        {
+            if (!ids.TryGetValue(v, out short vertexId))
+            {
+                vertexId = (short)ids.Count;
+                ids.Add(v, vertexId);
+                gfxObj.VertexArray.Vertices.Add((ushort)vertexId, new SWVertex { Origin = v });
+            }
+
+            polygon.VertexIds.Add(vertexId);
+        }
+
+        gfxObj.PhysicsPolygons.Add((ushort)gfxObj.PhysicsPolygons.Count, polygon);
     }
 
     private static BuildingPortal Door(ushort cell) => new() { OtherCellId = cell };

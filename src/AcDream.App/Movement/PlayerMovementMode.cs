@@ -28,6 +28,8 @@ namespace AcDream.App.Movement;
 /// the step) in the delta's Z, and the engine stops the rise under ceilings and lands the fall on the first floor; a
 /// head hit (<see cref="ResolveOutcome.Ceiling"/>) zeroes the upward speed, a landing the downward speed. It can jump
 /// (<see cref="Jump"/>, <see cref="MovementIntent.Jump"/>).
+/// A mover registered in the engine's <see cref="PhysicsEngine.Movers"/> gives its id (<see cref="MoverId"/>): its own
+/// walls are then not met by its moves, and each frame records the movers its steps touched (<see cref="Touched"/>).
 /// </remarks>
 public sealed class PlayerMovementMode
 {
@@ -61,6 +63,9 @@ public sealed class PlayerMovementMode
     /// <summary>The lowest jump: 0.35 m, the game's.</summary>
     public const float MinJumpHeight = 0.35f;
 
+    /// <summary>Most movers one frame records as touched (<see cref="Touched"/>): 16; any more are not recorded.</summary>
+    public const int MaxTouched = 16;
+
     private readonly PhysicsEngine _engine;
 
     /// <summary><see cref="Effects"/> while airborne: step down 0, so the mover lands only when its Z reaches the ground.</summary>
@@ -68,6 +73,13 @@ public sealed class PlayerMovementMode
 
     /// <summary>Whether the engine moves the body vertically (<see cref="MovementOptions.Vertical"/> with a body): the mode passes its fall in the delta.</summary>
     private readonly bool _vertical;
+
+    /// <summary>The movers the last <see cref="Update"/> touched, distinct, in the order first touched; reused every frame.</summary>
+    private readonly uint[] _touched = new uint[MaxTouched];
+    private int _touchedCount;
+
+    /// <summary>Where the mover stood before the last <see cref="Update"/> (<see cref="UndoLastUpdate"/>).</summary>
+    private (Vector3 Position, uint CellId, bool IsOnGround, float VerticalSpeed) _before;
 
     /// <summary>Places the mover; it starts on the ground, not moving vertically.</summary>
     /// <param name="engine">The engine to resolve against.</param>
@@ -96,6 +108,22 @@ public sealed class PlayerMovementMode
 
     /// <summary>The engine's opt-in effects this mover uses; see <see cref="MovementOptions"/>.</summary>
     public MovementOptions Effects { get; }
+
+    /// <summary>
+    /// The id this mover is registered under in the engine's <see cref="PhysicsEngine.Movers"/>: its steps pass it to
+    /// <c>Resolve</c>, so its own walls do not stop it and the rules of who blocks whom read its state, and each
+    /// <see cref="Update"/> records the movers touched (<see cref="Touched"/>).
+    /// </summary>
+    /// <value>0 (the default): not a registered mover; nothing is skipped and no touches are recorded.</value>
+    public uint MoverId { get; init; }
+
+    /// <summary>
+    /// The ids of the movers the last <see cref="Update"/>'s steps touched (the engine's answer: blocking or not; see
+    /// <see cref="PhysicsEngine.Resolve(Vector3, uint, Vector3, float, in MovementOptions, uint, Span{uint}, out int, out MoveReport)"/>),
+    /// each once, in the order first touched, at most <see cref="MaxTouched"/>; empty without a <see cref="MoverId"/>.
+    /// Valid until the next <see cref="Update"/>.
+    /// </summary>
+    public ReadOnlySpan<uint> Touched => _touched.AsSpan(0, _touchedCount);
 
     /// <summary>The speed of a run (<see cref="MovementIntent.Run"/>), metres per second.</summary>
     /// <value><see cref="RunSpeed"/> (4 m/s) by default; up to the game's fastest, 50 m/s.</value>
@@ -186,6 +214,8 @@ public sealed class PlayerMovementMode
             throw new ArgumentOutOfRangeException(nameof(frameSeconds), frameSeconds, "frame time must be a finite number of seconds ≥ 0.");
         }
 
+        _before = (Position, CellId, IsOnGround, VerticalSpeed);
+        _touchedCount = 0;
         if (frameSeconds == 0f)
         {
             return default;
@@ -224,6 +254,13 @@ public sealed class PlayerMovementMode
         return new MovementFrame(steps, refused, lastRefusal, lastNormal, slid, lastSlide, report with { Wall = wall }, jumps, headHits, landings, edges);
     }
 
+    /// <summary>
+    /// Puts the mover back where the last <see cref="Update"/> found it: its position, cell, footing and vertical speed
+    /// (the heading stays turned). For a host that refuses the engine's answer, such as one of two movers that reached
+    /// the same space in one frame, each resolved against where the other stood before it.
+    /// </summary>
+    public void UndoLastUpdate() => (Position, CellId, IsOnGround, VerticalSpeed) = _before;
+
     /// <summary>One step of <paramref name="dt"/> seconds; returns the engine's answer and what it met.</summary>
     private ResolveResult Step(MovementIntent intent, float dt, out MoveReport report)
     {
@@ -252,7 +289,7 @@ public sealed class PlayerMovementMode
                 delta.Z = 0.5f * (before + VerticalSpeed) * dt;
             }
 
-            result = _engine.Resolve(Position, CellId, delta, StepUpHeight, Effects, out report);
+            result = Resolve(Position, delta, Effects, out report);
             if (result.Outcome == ResolveOutcome.Ceiling && VerticalSpeed > 0f)
             {
                 VerticalSpeed = 0f; // a head hit
@@ -267,7 +304,7 @@ public sealed class PlayerMovementMode
                 position.Z += VerticalSpeed * dt;
             }
 
-            result = _engine.Resolve(position, CellId, delta, StepUpHeight, IsOnGround ? Effects : _fallingEffects, out report);
+            result = Resolve(position, delta, IsOnGround ? Effects : _fallingEffects, out report);
         }
 
         Position = result.Position;
@@ -276,6 +313,27 @@ public sealed class PlayerMovementMode
         if (result.IsOnGround && VerticalSpeed <= 0f)
         {
             VerticalSpeed = 0f; // a landing, or standing
+        }
+
+        return result;
+    }
+
+    /// <summary>One call of the engine from <paramref name="position"/> in <see cref="CellId"/>; with a <see cref="MoverId"/>, as that mover, recording what it touched.</summary>
+    private ResolveResult Resolve(Vector3 position, Vector3 delta, in MovementOptions effects, out MoveReport report)
+    {
+        if (MoverId == 0)
+        {
+            return _engine.Resolve(position, CellId, delta, StepUpHeight, effects, out report);
+        }
+
+        Span<uint> touched = stackalloc uint[MaxTouched];
+        ResolveResult result = _engine.Resolve(position, CellId, delta, StepUpHeight, effects, MoverId, touched, out int count, out report);
+        foreach (uint id in touched[..Math.Min(count, MaxTouched)])
+        {
+            if (_touchedCount < MaxTouched && Array.IndexOf(_touched, id, 0, _touchedCount) < 0)
+            {
+                _touched[_touchedCount++] = id;
+            }
         }
 
         return result;

@@ -13,8 +13,10 @@ namespace AcDream.App.Scenes;
 /// <param name="Effects">The engine's opt-in effects the walk uses (<c>"effects"</c>; default none).</param>
 /// <param name="World">The world walked (<c>"world"</c>, <see cref="World.HoltburgWorld.Worlds"/>; default Holtburg).</param>
 /// <param name="Objects">The object sets registered (<c>"objects"</c>, <see cref="World.HoltburgWorld.ObjectSets"/>; default none).</param>
+/// <param name="Creatures">The creatures (<c>"creatures"</c>; default none), in order: creature i has the mover id <c>SceneRunner.FirstCreatureId + i</c>.</param>
+/// <param name="Doors">The doors registered (<c>"doors"</c>, <see cref="World.HoltburgWorld.DoorSets"/>; default none), closed until a leg opens them.</param>
 internal sealed record Scene(string Name, string Source, Vector2 Start, float StartHeadingDegrees, IReadOnlyList<SceneLeg> Legs, IReadOnlyList<string> Notes, MovementOptions Effects,
-    string World = World.HoltburgWorld.Worlds.Holtburg, IReadOnlyList<string>? Objects = null)
+    string World = World.HoltburgWorld.Worlds.Holtburg, IReadOnlyList<string>? Objects = null, IReadOnlyList<SceneCreature>? Creatures = null, IReadOnlyList<string>? Doors = null)
 {
     /// <summary>The world this scene walks, with its objects.</summary>
     public World.HoltburgWorld CreateWorld() => new(World, Objects ?? []);

@@ -29,7 +29,14 @@ internal static class SceneReader
     /// <summary>How far a start may be from the centre landblock's middle (96, 96), metres, along X and along Y: the 3 × 3 landblocks around Holtburg and one more ring (the world is bigger, the walk is not).</summary>
     public const float MaxStartDistance = 2 * PhysicsConstants.LandblockSize;
 
-    private static readonly string[] SceneFields = ["name", "world", "objects", "start", "legs", "notes", "effects"];
+    /// <summary>Most creatures a scene may have.</summary>
+    public const int MaxCreatures = 256;
+
+    /// <summary>Farthest a creature may wander from its home, metres.</summary>
+    public const float MaxWander = 50f;
+
+    private static readonly string[] SceneFields = ["name", "world", "objects", "start", "legs", "notes", "effects", "creatures", "doors"];
+    private static readonly string[] CreatureFields = ["at", "wander", "seed"];
     /// <summary>Largest body radius a scene may give, metres.</summary>
     public const float MaxBodyRadius = 10f;
 
@@ -39,7 +46,7 @@ internal static class SceneReader
     private static readonly string[] EffectFields = ["stepDownHeight", "walkableSlope", "sweepStepLength", "doorsOnly", "body", "vertical", "footing", "edgeSlide"];
     private static readonly string[] BodyFields = ["radius", "height"];
     private static readonly string[] StartFields = ["position", "heading"];
-    private static readonly string[] LegFields = ["name", "to", "forward", "strafe", "turn", "run", "backward", "seconds", "jump", "jumpSkill"];
+    private static readonly string[] LegFields = ["name", "to", "forward", "strafe", "turn", "run", "backward", "seconds", "jump", "jumpSkill", "open", "close"];
 
     /// <summary>The embedded default scene.</summary>
     public static Scene ReadDefault()
@@ -113,7 +120,16 @@ internal static class SceneReader
             }
 
             float heading = context.OptionalNumber(start, "heading", "start.heading", 0f, -360f, 360f);
+            MovementOptions effects = root.TryGetProperty("effects", out JsonElement effectsElement) ? ReadEffects(context, effectsElement) : default;
+            string world = HoltburgWorld.Worlds.Holtburg;
+            if (root.TryGetProperty("world", out JsonElement worldElement))
+            {
+                world = worldElement.ValueKind == JsonValueKind.String && worldElement.GetString() is HoltburgWorld.Worlds.Holtburg or HoltburgWorld.Worlds.Staircase
+                    ? worldElement.GetString()!
+                    : throw context.Error("world", worldElement, $"must be \"{HoltburgWorld.Worlds.Holtburg}\" or \"{HoltburgWorld.Worlds.Staircase}\"");
+            }
 
+            List<string> doors = ReadNames(context, root, "doors", HoltburgWorld.DoorSets, world, "door");
             JsonElement legsElement = context.Require(root, "legs", "legs");
             if (legsElement.ValueKind != JsonValueKind.Array || legsElement.GetArrayLength() == 0)
             {
@@ -124,7 +140,7 @@ internal static class SceneReader
             int index = 0;
             foreach (JsonElement leg in legsElement.EnumerateArray())
             {
-                legs.Add(ReadLeg(context, leg, $"legs[{index++}]"));
+                legs.Add(ReadLeg(context, leg, $"legs[{index++}]", doors));
             }
 
             var notes = new List<string>();
@@ -143,45 +159,91 @@ internal static class SceneReader
                 }
             }
 
-            MovementOptions effects = root.TryGetProperty("effects", out JsonElement effectsElement) ? ReadEffects(context, effectsElement) : default;
-            string world = HoltburgWorld.Worlds.Holtburg;
-            if (root.TryGetProperty("world", out JsonElement worldElement))
-            {
-                world = worldElement.ValueKind == JsonValueKind.String && worldElement.GetString() is HoltburgWorld.Worlds.Holtburg or HoltburgWorld.Worlds.Staircase
-                    ? worldElement.GetString()!
-                    : throw context.Error("world", worldElement, $"must be \"{HoltburgWorld.Worlds.Holtburg}\" or \"{HoltburgWorld.Worlds.Staircase}\"");
-            }
 
-            var objects = new List<string>();
-            if (root.TryGetProperty("objects", out JsonElement objectsElement))
-            {
-                if (objectsElement.ValueKind != JsonValueKind.Array)
-                {
-                    throw context.Error("objects", objectsElement, "must be an array of object set names");
-                }
-
-                int n = 0;
-                foreach (JsonElement set in objectsElement.EnumerateArray())
-                {
-                    string? text = set.ValueKind == JsonValueKind.String ? set.GetString() : null;
-                    if (text is null || !HoltburgWorld.ObjectSets.TryGetValue(text, out string? home) || home != world)
-                    {
-                        string allowed = string.Join(", ", HoltburgWorld.ObjectSets.Where(s => s.Value == world).Select(s => $"\"{s.Key}\""));
-                        throw context.Error($"objects[{n}]", set, $"must be one of the {world} world's object sets ({allowed})");
-                    }
-
-                    if (objects.Contains(text))
-                    {
-                        throw context.Error($"objects[{n}]", set, "is listed twice");
-                    }
-
-                    objects.Add(text);
-                    n++;
-                }
-            }
-
-            return new Scene(name, source, position, heading, legs, notes, effects, world, objects);
+            List<string> objects = ReadNames(context, root, "objects", HoltburgWorld.ObjectSets, world, "object set");
+            List<SceneCreature> creatures = ReadCreatures(context, root);
+            return new Scene(name, source, position, heading, legs, notes, effects, world, objects, creatures, doors);
         }
+    }
+
+    /// <summary>
+    /// A list of names of the world's sets (<c>"objects"</c>, <c>"doors"</c>; <paramref name="what"/> names one): each one of <paramref name="sets"/> whose
+    /// world is <paramref name="world"/>, at most once; empty when the field is absent.
+    /// </summary>
+    private static List<string> ReadNames(Context context, JsonElement root, string field, IReadOnlyDictionary<string, string> sets, string world, string what)
+    {
+        var names = new List<string>();
+        if (!root.TryGetProperty(field, out JsonElement element))
+        {
+            return names;
+        }
+
+        if (element.ValueKind != JsonValueKind.Array)
+        {
+            throw context.Error(field, element, $"must be an array of {what} names");
+        }
+
+        int n = 0;
+        foreach (JsonElement set in element.EnumerateArray())
+        {
+            string? text = set.ValueKind == JsonValueKind.String ? set.GetString() : null;
+            if (text is null || !sets.TryGetValue(text, out string? home) || home != world)
+            {
+                string allowed = string.Join(", ", sets.Where(s => s.Value == world).Select(s => $"\"{s.Key}\""));
+                throw context.Error($"{field}[{n}]", set, $"must be one of the {world} world's {what}s ({(allowed.Length > 0 ? allowed : "it has none")})");
+            }
+
+            if (names.Contains(text))
+            {
+                throw context.Error($"{field}[{n}]", set, "is listed twice");
+            }
+
+            names.Add(text);
+            n++;
+        }
+
+        return names;
+    }
+
+    /// <summary>
+    /// <c>"creatures"</c>: at most <see cref="MaxCreatures"/>, each <c>{ "at": [x, y], "wander": metres, "seed": n }</c>:
+    /// <c>at</c> required, within <see cref="MaxStartDistance"/> of (96, 96) as the start; <c>wander</c> 0..<see cref="MaxWander"/>,
+    /// default 0 (it stands); <c>seed</c> a whole number ≥ 0, default the creature's number (1 for the first).
+    /// </summary>
+    private static List<SceneCreature> ReadCreatures(Context context, JsonElement root)
+    {
+        var creatures = new List<SceneCreature>();
+        if (!root.TryGetProperty("creatures", out JsonElement element))
+        {
+            return creatures;
+        }
+
+        if (element.ValueKind != JsonValueKind.Array || element.GetArrayLength() > MaxCreatures)
+        {
+            throw context.Error("creatures", element, $"must be an array of at most {MaxCreatures} creatures");
+        }
+
+        foreach (JsonElement creature in element.EnumerateArray())
+        {
+            string path = $"creatures[{creatures.Count}]";
+            context.RequireObject(creature, path, CreatureFields);
+            Vector2 at = context.RequirePoint(creature, "at", $"{path}.at");
+            if (MathF.Abs(at.X - 96f) > MaxStartDistance || MathF.Abs(at.Y - 96f) > MaxStartDistance)
+            {
+                throw context.Error($"{path}.at", creature.GetProperty("at"), $"must be within {MaxStartDistance} m of the centre landblock's middle (96, 96)");
+            }
+
+            float wander = context.OptionalNumber(creature, "wander", $"{path}.wander", 0f, 0f, MaxWander);
+            float seed = context.OptionalNumber(creature, "seed", $"{path}.seed", creatures.Count + 1, 0f, int.MaxValue);
+            if (seed != MathF.Floor(seed))
+            {
+                throw context.Error($"{path}.seed", creature.GetProperty("seed"), "must be a whole number");
+            }
+
+            creatures.Add(new SceneCreature(at, wander, (int)Math.Min(seed, int.MaxValue)));
+        }
+
+        return creatures;
     }
 
     /// <summary><c>"effects"</c>: <c>"literal"</c>, <c>"player"</c> (with the player's body), or an object naming each effect.</summary>
@@ -239,10 +301,15 @@ internal static class SceneReader
         }
     }
 
-    private static SceneLeg ReadLeg(Context context, JsonElement leg, string path)
+    private static SceneLeg ReadLeg(Context context, JsonElement leg, string path, List<string> doors)
     {
         context.RequireObject(leg, path, LegFields);
         string name = context.RequireString(leg, "name", $"{path}.name");
+        string? open = ReadDoor("open"), close = ReadDoor("close");
+        if (open is not null && close is not null)
+        {
+            throw context.Error(path, leg, "has \"open\" and \"close\"; a leg opens a door or closes one");
+        }
         bool run = context.OptionalBool(leg, "run", $"{path}.run");
         bool backward = context.OptionalBool(leg, "backward", $"{path}.backward");
         bool jump = context.OptionalBool(leg, "jump", $"{path}.jump");
@@ -262,7 +329,7 @@ internal static class SceneReader
 
             Vector2 to = context.RequirePoint(leg, "to", $"{path}.to");
             float limit = context.OptionalNumber(leg, "seconds", $"{path}.seconds", DefaultPointLegSeconds, float.Epsilon, MaxLegSeconds);
-            return new SceneLeg(name, to, 0f, 0f, 0f, run, backward, limit, jump, (int)skill);
+            return new SceneLeg(name, to, 0f, 0f, 0f, run, backward, limit, jump, (int)skill, open, close);
         }
 
         if (leg.TryGetProperty("backward", out JsonElement backwardElement))
@@ -284,7 +351,19 @@ internal static class SceneReader
         }
 
         float seconds = context.OptionalNumber(leg, "seconds", $"{path}.seconds", 0f, float.Epsilon, MaxLegSeconds);
-        return new SceneLeg(name, null, forward, strafe, turn, run, false, seconds, jump, (int)skill);
+        return new SceneLeg(name, null, forward, strafe, turn, run, false, seconds, jump, (int)skill, open, close);
+
+        string? ReadDoor(string field)
+        {
+            if (!leg.TryGetProperty(field, out JsonElement door))
+            {
+                return null;
+            }
+
+            return door.ValueKind == JsonValueKind.String && doors.Contains(door.GetString()!)
+                ? door.GetString()
+                : throw context.Error($"{path}.{field}", door, $"must name one of the scene's \"doors\" ({(doors.Count > 0 ? string.Join(", ", doors.Select(d => $"\"{d}\"")) : "it lists none")})");
+        }
     }
 
     /// <summary>Error helpers that name the source, the field and the value.</summary>

@@ -11,6 +11,15 @@ namespace AcDream.App.Scenes;
 /// frame the runner waits for the loads requested in that frame before the next one, so every run
 /// of a scene gives the same frames.
 /// </summary>
+/// <remarks>
+/// The player is a mover (<see cref="PlayerId"/>, a cylinder of its body, <see cref="MoverState.Player"/>); the scene's
+/// creatures (<see cref="FirstCreatureId"/> on) and doors appear with their landblock and leave with it. Each frame:
+/// streaming, the leg's door action (on its first frame), one commit of the movers (<see cref="GameWindow.CommitMovers"/>),
+/// the player's move, then each creature's, each resolved by the engine with its own id against the movers as committed
+/// at the frame's start; a creature whose answer ends inside a mover that has already moved this frame (the player, or
+/// a creature before it) stays where it was for the frame (<see cref="Creature.HoldBack"/>). Then every mover is moved
+/// to where it ended, for the next frame's commit.
+/// </remarks>
 internal static class SceneRunner
 {
     /// <summary>Simulation rate: 30 frames per second.</summary>
@@ -18,6 +27,12 @@ internal static class SceneRunner
 
     /// <summary>A point leg ends when the mover is this close to its point, metres.</summary>
     public const float ArrivalDistance = 0.01f;
+
+    /// <summary>The player's mover id: 0x50000001, the game's first player id.</summary>
+    public const uint PlayerId = 0x50000001;
+
+    /// <summary>The first creature's mover id: 0x80000001 (the game numbers the objects it creates from 0x80000000); creature i of a scene is 0x80000001 + i.</summary>
+    public const uint FirstCreatureId = 0x80000001;
 
     /// <summary>Longest wait for one frame's landblock loads before the run gives up: 30 s.</summary>
     private static readonly TimeSpan LoadTimeout = TimeSpan.FromSeconds(30);
@@ -40,12 +55,27 @@ internal static class SceneRunner
         var samples = new List<FrameSample>();
         var legs = new List<LegResult>();
         var drops = new List<Drop>();
+        var touches = new List<MoverTouch>();
+        var doorChanges = new List<DoorChange>();
+        var creatures = (scene.Creatures ?? []).Select((c, i) => new Creature(FirstCreatureId + (uint)i, c)).ToList();
+        var doors = (scene.Doors ?? []).Select(name => world.Doors[name]).ToList();
+        var doorsIn = new HashSet<uint>(); // the doors registered now
+        var doorStates = new Dictionary<uint, DoorState>(); // each registered door's last recorded state
+        MoverShape creatureShape = MoverShape.Cylinder(MoverBody.Player.Radius, MoverBody.Player.Height);
         int frame = 0;
 
         using var window = new GameWindow(world, world.HeightTable, world.Center, warnings.Add);
-        window.LandblockLoaded += id => streaming.Add(new StreamingEvent(frame, id, true, window.ObjectCounts.GetValueOrDefault(id)));
-        window.LandblockUnloaded += id => streaming.Add(new StreamingEvent(frame, id, false));
         PhysicsEngine engine = window.Physics;
+        window.LandblockLoaded += id =>
+        {
+            streaming.Add(new StreamingEvent(frame, id, true, window.ObjectCounts.GetValueOrDefault(id)));
+            Populate(id);
+        };
+        window.LandblockUnloaded += id =>
+        {
+            streaming.Add(new StreamingEvent(frame, id, false));
+            Depopulate(id);
+        };
 
         var startXY = new Vector3(scene.Start, 0f);
         window.UpdateStreaming(startXY);
@@ -53,7 +83,11 @@ internal static class SceneRunner
         window.UpdateStreaming(startXY);
         ResolveResult start = StartOnGround(startXY, engine);
 
-        var mode = new PlayerMovementMode(engine, start.Position, start.CellId, scene.StartHeadingDegrees * (MathF.PI / 180f), scene.Effects);
+        var mode = new PlayerMovementMode(engine, start.Position, start.CellId, scene.StartHeadingDegrees * (MathF.PI / 180f), scene.Effects) { MoverId = PlayerId };
+        MoverBody playerBody = scene.Effects.Body ?? MoverBody.Player;
+        window.AddMover(PlayerId, MoverShape.Cylinder(playerBody.Radius, playerBody.Height), start.Position, start.CellId, Facing(mode.Heading), MoverState.Player);
+        window.CommitMovers();
+        RecordDoors();
         samples.Add(new FrameSample(0, start.Position, start.CellId, start.IsOnGround, null));
 
         bool truncated = false;
@@ -66,6 +100,7 @@ internal static class SceneRunner
             bool reached = false;
             mode.JumpSkill = leg.JumpSkill;
             (int Jumps, int HeadHits, int Landings, int EdgeSlides) air = default;
+            DoorAction(leg);
             for (int n = 0; ; n++)
             {
                 MovementIntent intent;
@@ -110,8 +145,17 @@ internal static class SceneRunner
                 frame++;
                 window.UpdateStreaming(mode.Position);
                 Wait(window);
+                window.CommitMovers();
+                RecordDoors();
                 FrameSample before = samples[^1];
                 MovementFrame moved = mode.Update(intent, dt);
+                foreach (uint id in mode.Touched)
+                {
+                    touches.Add(new MoverTouch(frame, id, moved.Met.Wall.Kind == SurfaceKind.Mover && moved.Met.Wall.Id == id));
+                }
+
+                StepCreatures(mode);
+                window.MoveMover(PlayerId, mode.Position, mode.CellId, Facing(mode.Heading));
                 if (moved.LastRefusal is ResolveOutcome refusal)
                 {
                     refusals[refusal] = refusals.GetValueOrDefault(refusal) + 1;
@@ -141,8 +185,130 @@ internal static class SceneRunner
             }
         }
 
-        return new WalkRecord(scene, samples, legs, streaming, drops, warnings, truncated);
+        return new WalkRecord(scene, samples, legs, streaming, drops, warnings, truncated)
+        {
+            Creatures = creatures.ConvertAll(c => c.Path()),
+            Touches = touches,
+            DoorChanges = doorChanges,
+        };
+
+        // A landblock loaded: its doors (closed) and the creatures whose home is in it appear.
+        void Populate(uint landblockId)
+        {
+            foreach (WorldDoor door in doors.Where(d => CellIds.LandblockOf(d.CellId) == landblockId))
+            {
+                window.AddMover(door.Id, door.Shape, door.Position, door.CellId, door.Orientation, MoverState.Door);
+                doorsIn.Add(door.Id);
+                doorStates.Remove(door.Id);
+            }
+
+            foreach (Creature creature in creatures.Where(c => c.Mode is null && engine.LandblockAt(new Vector3(c.Scene.Home, 0f)) == landblockId))
+            {
+                ResolveResult home = StartOnGround(new Vector3(creature.Scene.Home, 0f), engine);
+                var walk = new PlayerMovementMode(engine, home.Position, home.CellId, 0f, MovementOptions.Player) { MoverId = creature.Id };
+                window.AddMover(creature.Id, creatureShape, home.Position, home.CellId, Facing(walk.Heading), MoverState.Creature);
+                creature.Appear(walk, frame);
+            }
+        }
+
+        // A landblock unloaded: the window took its movers out of the engine; the creatures and doors in it leave the walk.
+        void Depopulate(uint landblockId)
+        {
+            foreach (Creature creature in creatures.Where(c => c.Mode is PlayerMovementMode m && CellIds.LandblockOf(m.CellId) == landblockId))
+            {
+                creature.Disappear(frame, landblockId);
+            }
+
+            foreach (WorldDoor door in doors.Where(d => CellIds.LandblockOf(d.CellId) == landblockId))
+            {
+                doorsIn.Remove(door.Id);
+                doorStates.Remove(door.Id);
+            }
+        }
+
+        // The leg's door action, at its start: committed with its first frame, before the move.
+        void DoorAction(SceneLeg leg)
+        {
+            foreach ((string? name, bool open) in new[] { (leg.Open, true), (leg.Close, false) })
+            {
+                if (name is not null && world.Doors[name].Id is uint id && doorsIn.Contains(id))
+                {
+                    if (open)
+                    {
+                        engine.Movers.Open(id);
+                    }
+                    else
+                    {
+                        engine.Movers.Close(id);
+                    }
+                }
+            }
+        }
+
+        // After a commit: each registered door's state, recorded when it changed (or first seen).
+        void RecordDoors()
+        {
+            foreach (WorldDoor door in doors)
+            {
+                if (!doorsIn.Contains(door.Id))
+                {
+                    continue;
+                }
+
+                DoorState state = engine.Movers.GetDoorState(door.Id);
+                if (!doorStates.TryGetValue(door.Id, out DoorState last) || last != state)
+                {
+                    doorStates[door.Id] = state;
+                    doorChanges.Add(new DoorChange(frame, door.Id, state));
+                }
+            }
+        }
+
+        // Each creature's move, after the player's; one whose answer ends inside a mover that has already moved this frame stays.
+        void StepCreatures(PlayerMovementMode player)
+        {
+            foreach (Creature creature in creatures)
+            {
+                if (creature.Mode is not null)
+                {
+                    creature.Step(dt);
+                }
+            }
+
+            for (int i = 0; i < creatures.Count; i++)
+            {
+                if (creatures[i].Mode is not PlayerMovementMode walk)
+                {
+                    continue;
+                }
+
+                bool inside = Overlap(walk.Position, MoverBody.Player, player.Position, playerBody);
+                for (int j = 0; j < i && !inside; j++)
+                {
+                    inside = creatures[j].Mode is PlayerMovementMode other && Overlap(walk.Position, MoverBody.Player, other.Position, MoverBody.Player);
+                }
+
+                if (inside)
+                {
+                    creatures[i].HoldBack();
+                }
+
+                creatures[i].Record(frame);
+                window.MoveMover(creatures[i].Id, walk.Position, walk.CellId, Facing(walk.Heading));
+            }
+        }
     }
+
+    /// <summary>Whether two upright cylinders standing on <paramref name="a"/> and <paramref name="b"/> overlap: closer than their radii's sum across, and their heights overlapping.</summary>
+    private static bool Overlap(Vector3 a, MoverBody bodyA, Vector3 b, MoverBody bodyB)
+    {
+        float reach = bodyA.Radius + bodyB.Radius;
+        return Vector2.DistanceSquared(new Vector2(a.X, a.Y), new Vector2(b.X, b.Y)) < reach * reach
+            && a.Z < b.Z + bodyB.Height && b.Z < a.Z + bodyA.Height;
+    }
+
+    /// <summary>A mover's orientation facing compass <paramref name="heading"/> (radians, 0 north, clockwise): its own +Y turned to the heading about Z.</summary>
+    private static Quaternion Facing(float heading) => Quaternion.CreateFromAxisAngle(Vector3.UnitZ, -heading);
 
     /// <summary>
     /// The start on the terrain, as the engine has it: the ground's Z under the start, then the cell

@@ -59,6 +59,62 @@ internal sealed record WalkRecord(
     /// <summary>The last sample: where the walk ended.</summary>
     public FrameSample Final => Samples[^1];
 
+    /// <summary>The scene's creatures' walks, in the scene's order.</summary>
+    public IReadOnlyList<CreaturePath> Creatures { get; init; } = [];
+
+    /// <summary>The movers the player's moves touched, frame by frame (each mover once a frame).</summary>
+    public IReadOnlyList<MoverTouch> Touches { get; init; } = [];
+
+    /// <summary>The scene's doors' states: each door's state when registered, then each change, in frame order.</summary>
+    public IReadOnlyList<DoorChange> DoorChanges { get; init; } = [];
+
+    /// <summary>
+    /// The closest two creatures' centres came, seen from above, after any frame, of two whose heights overlap (one
+    /// may stand on a plinth's edge above another): metres, the two ids and the frame; (∞, 0, 0, −1) with none.
+    /// </summary>
+    public (float Distance, uint A, uint B, int Frame) ClosestCreatures()
+    {
+        (float Distance, uint A, uint B, int Frame) closest = (float.PositiveInfinity, 0u, 0u, -1);
+        var byFrame = Creatures.SelectMany(c => c.Samples.Select(s => (c.Id, s))).GroupBy(x => x.s.Frame);
+        foreach (var frame in byFrame)
+        {
+            var at = frame.ToList();
+            for (int i = 0; i < at.Count; i++)
+            {
+                for (int j = i + 1; j < at.Count; j++)
+                {
+                    Vector3 a = at[i].s.Position, b = at[j].s.Position;
+                    float d = Vector2.Distance(new Vector2(a.X, a.Y), new Vector2(b.X, b.Y));
+                    bool level = MathF.Abs(a.Z - b.Z) < MoverBody.Player.Height;
+                    closest = level && d < closest.Distance ? (d, at[i].Id, at[j].Id, frame.Key) : closest;
+                }
+            }
+        }
+
+        return closest;
+    }
+
+    /// <summary>The closest a creature's centre came to the player's, seen from above, after any frame, their heights overlapping: metres, its id and the frame; (∞, 0, −1) with none.</summary>
+    public (float Distance, uint Id, int Frame) ClosestToPlayer()
+    {
+        (float Distance, uint Id, int Frame) closest = (float.PositiveInfinity, 0u, -1);
+        float height = Scene.Effects.Body?.Height ?? MoverBody.Player.Height;
+        var player = Samples.ToDictionary(s => s.Frame, s => s.Position);
+        foreach (CreaturePath creature in Creatures)
+        {
+            foreach (CreatureSample s in creature.Samples)
+            {
+                if (player.TryGetValue(s.Frame, out Vector3 p) && s.Position.Z < p.Z + height && p.Z < s.Position.Z + MoverBody.Player.Height)
+                {
+                    float d = Vector2.Distance(new Vector2(p.X, p.Y), new Vector2(s.Position.X, s.Position.Y));
+                    closest = d < closest.Distance ? (d, creature.Id, s.Frame) : closest;
+                }
+            }
+        }
+
+        return closest;
+    }
+
     /// <summary>Frames that ended off the ground.</summary>
     public int AirborneFrames => Samples.Count(s => !s.IsOnGround);
 
@@ -114,3 +170,26 @@ internal sealed record WalkRecord(
         return visits;
     }
 }
+
+/// <summary>A mover the player's move touched during one frame (the engine's answer, blocking or not).</summary>
+/// <param name="Frame">The frame.</param>
+/// <param name="MoverId">The mover's id.</param>
+/// <param name="Stopped">Whether it is the wall the engine reported stopping or sliding the player that frame (<see cref="MoveReport.Wall"/>, <see cref="SurfaceKind.Mover"/>).</param>
+internal readonly record struct MoverTouch(int Frame, uint MoverId, bool Stopped);
+
+/// <summary>A door's state from frame <paramref name="Frame"/> on, as committed at that frame's start (what its moves met).</summary>
+internal readonly record struct DoorChange(int Frame, uint DoorId, DoorState State);
+
+/// <summary>Where a creature was after one frame.</summary>
+/// <param name="Frame">The frame.</param>
+/// <param name="Position">Feet, world metres.</param>
+/// <param name="CellId">Cell id, <c>0xXXYYCCCC</c>.</param>
+internal readonly record struct CreatureSample(int Frame, Vector3 Position, uint CellId);
+
+/// <summary>A creature's walk: one sample per frame it was in the world.</summary>
+/// <param name="Id">Its mover id.</param>
+/// <param name="Creature">What the scene says of it.</param>
+/// <param name="Samples">Where it was after each frame it was in the world, in frame order.</param>
+/// <param name="HeldBack">Frames its answer ended inside a mover that had already moved that frame, so it stayed.</param>
+/// <param name="Removed">The frames it left the world with its landblock, and that landblock.</param>
+internal sealed record CreaturePath(uint Id, SceneCreature Creature, IReadOnlyList<CreatureSample> Samples, int HeldBack, IReadOnlyList<(int Frame, uint LandblockId)> Removed);

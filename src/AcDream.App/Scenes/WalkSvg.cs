@@ -11,7 +11,7 @@ namespace AcDream.App.Scenes;
 /// <summary>
 /// Draws a walk as SVG: a top-down map (terrain contours every 2 m, the Holtburg floor plans, the
 /// route coloured by cell, refused moves as red rings, and, with a body, the body's clearance where
-/// it touched a wall) and a side profile of Z over the frames.
+/// it touched a wall; the scene's doors and its creatures' paths) and a side profile of Z over the frames.
 /// </summary>
 internal static partial class WalkSvg
 {
@@ -27,6 +27,15 @@ internal static partial class WalkSvg
     /// <summary>Stroke of the body's clearance circles: blue, apart from the route's cell colours and the red refusal rings.</summary>
     private const string ClearanceColour = "#1565c0";
 
+    /// <summary>Colour of the creatures' paths and bodies: brown, apart from the route's cell colours, the objects' purple and the blue circles.</summary>
+    private const string CreatureColour = "#8d6e63";
+
+    /// <summary>Colour of the doors' slabs: dark orange.</summary>
+    private const string DoorColour = "#e65100";
+
+    /// <summary>A creature's path is drawn through points at least this far apart, metres (and its last), so a long walk stays a light line.</summary>
+    private const float CreaturePathSpacing = 0.25f;
+
     /// <summary>A physics polygon is drawn as a wall outline when its unit normal's |Z| is below this (within about 11.5° of vertical). Drawing only; floors come from the engine.</summary>
     private const float WallMaxNormalZ = 0.2f;
     private static readonly XNamespace Svg = "http://www.w3.org/2000/svg";
@@ -40,9 +49,10 @@ internal static partial class WalkSvg
         // The scene's world frame, centred on Holtburg as the scene runner's engine: only its id and frame helpers are used.
         var frame = new PhysicsEngine(world.Center);
 
-        // Map extent: the route, padded, in world metres (the engine's frame: 0xA9B4's SW corner is (0, 0)).
-        float minX = samples.Min(s => s.Position.X) - 15f, maxX = samples.Max(s => s.Position.X) + 15f;
-        float minY = samples.Min(s => s.Position.Y) - 15f, maxY = samples.Max(s => s.Position.Y) + 15f;
+        // Map extent: the route and the creatures' paths, padded, in world metres (the engine's frame: 0xA9B4's SW corner is (0, 0)).
+        Vector3[] drawn = [.. samples.Select(s => s.Position), .. record.Creatures.SelectMany(c => c.Samples).Select(s => s.Position)];
+        float minX = drawn.Min(p => p.X) - 15f, maxX = drawn.Max(p => p.X) + 15f;
+        float minY = drawn.Min(p => p.Y) - 15f, maxY = drawn.Max(p => p.Y) + 15f;
         float scale = MathF.Min((Width - (2 * Margin)) / (maxX - minX), MapMaxHeight / (maxY - minY));
         float mapHeight = (maxY - minY) * scale;
         float mapTop = Margin;
@@ -53,6 +63,8 @@ internal static partial class WalkSvg
         AddContours(map, world, frame, new MapExtent(minX, maxX, minY, maxY), Map);
         AddFloorPlans(map, world, frame, colours, Map);
         AddObjects(map, world, frame, scale, Map);
+        AddDoors(map, record, world, Map);
+        AddCreatures(map, record, scale, Map);
         AddRoute(map, samples, colours, s => Map(s.Position.X, s.Position.Y));
         foreach (Vector2 p in samples.Where(s => s.Refusal is not null).Select(s => Map(s.Position.X, s.Position.Y)).Distinct())
         {
@@ -118,6 +130,20 @@ internal static partial class WalkSvg
             legend.Add(Label(Margin + 14, ly, "objects, seen from above: floors filled, walls dashed, cylinders as circles", 11));
             ly += 16f;
             legend.Add(Label(Margin + 14, ly, Invariant($"objects ({string.Join(", ", world.ObjectSurfaces.Select(o => o.ObjectId).Distinct().Select(id => $"0x{id:X8}{(HoltburgWorld.ObjectName(id) is string n ? $" {n}" : "")}"))})"), 11));
+        }
+
+        if (record.DoorChanges.Count > 0)
+        {
+            ly += 18f;
+            legend.Add(new XElement(Svg + "rect", Attr("x", Margin), Attr("y", ly - 7), Attr("width", 10f), Attr("height", 4f), new XAttribute("fill", DoorColour)));
+            legend.Add(Label(Margin + 14, ly, Invariant($"doors, seen from above: their slabs ({string.Join(", ", record.DoorChanges.Select(d => d.DoorId).Distinct().Select(id => $"0x{id:X8}{(HoltburgWorld.ObjectName(id) is string n ? $" {n}" : "")}"))})"), 11));
+        }
+
+        if (record.Creatures.Count > 0)
+        {
+            ly += 18f;
+            legend.Add(new XElement(Svg + "circle", Attr("cx", Margin + 5), Attr("cy", ly - 4), Attr("r", 4f), new XAttribute("fill", CreatureColour), Attr("fill-opacity", 0.3f), new XAttribute("stroke", CreatureColour)));
+            legend.Add(Label(Margin + 14, ly, Invariant($"creatures ({record.Creatures.Count}): each one's path, and its body (radius {MoverBody.Player.Radius} m) where it ended"), 11));
         }
 
         ly += 18f;
@@ -298,6 +324,82 @@ internal static partial class WalkSvg
         }
 
         parent.Add(objects);
+    }
+
+    /// <summary>
+    /// The scene's doors, seen from above, in <see cref="DoorColour"/>: each slab's physics polygons placed at the door's
+    /// frame, one group per door titled with its id and its states (<see cref="WalkRecord.DoorChanges"/>).
+    /// </summary>
+    private static void AddDoors(XElement parent, WalkRecord record, HoltburgWorld world, Func<float, float, Vector2> place)
+    {
+        var doors = new XElement(Svg + "g", new XAttribute("id", "doors"), new XAttribute("fill", DoorColour), Attr("fill-opacity", 0.6f), new XAttribute("stroke", DoorColour), Attr("stroke-width", 0.5f));
+        foreach (WorldDoor door in world.Doors.Values.Where(d => record.DoorChanges.Any(c => c.DoorId == d.Id)))
+        {
+            string states = string.Join(", ", record.DoorChanges.Where(c => c.DoorId == door.Id).Select(c => Invariant($"{c.State.ToString().ToLowerInvariant()} at frame {c.Frame}")));
+            var group = new XElement(Svg + "g", new XAttribute("class", "door"), new XAttribute("data-mover-id", $"0x{door.Id:X8}"),
+                new XElement(Svg + "title", $"door 0x{door.Id:X8} {HoltburgWorld.ObjectName(door.Id)}: {states}"));
+            foreach (Polygon polygon in door.Slab.PhysicsPolygons.Values)
+            {
+                string points = string.Join(" ", polygon.VertexIds.Select(id => door.Position + Vector3.Transform(door.Slab.VertexArray.Vertices[(ushort)id].Origin, door.Orientation))
+                    .Select(p => place(p.X, p.Y)).Select(p => Invariant($"{p.X:0.##},{p.Y:0.##}")));
+                group.Add(new XElement(Svg + "polygon", new XAttribute("points", points)));
+            }
+
+            doors.Add(group);
+        }
+
+        parent.Add(doors);
+    }
+
+    /// <summary>
+    /// The creatures, in <see cref="CreatureColour"/>: each one's path (through points <see cref="CreaturePathSpacing"/>
+    /// apart and its last, a new line where it left the world and came back; none for one that never moved) and a circle
+    /// of its body's radius where it ended, one group per creature titled with its id.
+    /// </summary>
+    private static void AddCreatures(XElement parent, WalkRecord record, float scale, Func<float, float, Vector2> place)
+    {
+        var creatures = new XElement(Svg + "g", new XAttribute("id", "creatures"), new XAttribute("stroke", CreatureColour), new XAttribute("fill", "none"));
+        foreach (CreaturePath creature in record.Creatures.Where(c => c.Samples.Count > 0))
+        {
+            var group = new XElement(Svg + "g", new XAttribute("class", "creature"), new XAttribute("data-mover-id", $"0x{creature.Id:X8}"),
+                new XElement(Svg + "title", Invariant($"creature 0x{creature.Id:X8}: {(creature.Creature.Wander > 0f ? $"wanders {creature.Creature.Wander} m about" : "stands at")} ({creature.Creature.Home.X}, {creature.Creature.Home.Y}), seed {creature.Creature.Seed}")));
+            var line = new List<Vector2>();
+            for (int i = 0; i < creature.Samples.Count; i++)
+            {
+                CreatureSample sample = creature.Samples[i];
+                var at = new Vector2(sample.Position.X, sample.Position.Y);
+                if (i > 0 && sample.Frame != creature.Samples[i - 1].Frame + 1)
+                {
+                    AddLine(); // it left the world and came back
+                }
+
+                if (line.Count == 0 || Vector2.Distance(at, line[^1]) >= CreaturePathSpacing || (i == creature.Samples.Count - 1 && at != line[^1]))
+                {
+                    line.Add(at);
+                }
+            }
+
+            AddLine();
+            Vector3 end = creature.Samples[^1].Position;
+            Vector2 centre = place(end.X, end.Y);
+            group.Add(new XElement(Svg + "circle", new XAttribute("class", "creature-body"), Attr("cx", centre.X), Attr("cy", centre.Y), Attr("r", MoverBody.Player.Radius * scale),
+                new XAttribute("fill", CreatureColour), Attr("fill-opacity", 0.3f)));
+            creatures.Add(group);
+
+            // A line through the points gathered, when it went anywhere.
+            void AddLine()
+            {
+                if (line.Count > 1)
+                {
+                    string points = string.Join(" ", line.Select(p => place(p.X, p.Y)).Select(p => Invariant($"{p.X:0.##},{p.Y:0.##}")));
+                    group.Add(new XElement(Svg + "polyline", new XAttribute("class", "creature-path"), new XAttribute("points", points), Attr("stroke-width", 0.5f), Attr("stroke-opacity", 0.7f)));
+                }
+
+                line.Clear();
+            }
+        }
+
+        parent.Add(creatures);
     }
 
     private static float NiceStep(float rough)

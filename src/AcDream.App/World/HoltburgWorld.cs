@@ -1,3 +1,4 @@
+using System.Numerics;
 using AcDream.App.Fixtures;
 using AcDream.App.Streaming;
 using AcDream.Core.Dat;
@@ -35,6 +36,12 @@ internal sealed class HoltburgWorld : ILandblockSource
         ["small-building"] = Worlds.Holtburg,
         ["cellar-stairs"] = Worlds.Holtburg,
         ["staircase"] = Worlds.Staircase,
+    };
+
+    /// <summary>The doors a scene may register (<c>"doors"</c>), with the world each stands in.</summary>
+    public static readonly IReadOnlyDictionary<string, string> DoorSets = new Dictionary<string, string>
+    {
+        ["cottage-west"] = Worlds.Holtburg,
     };
 
     /// <summary>The staircase's landblock.</summary>
@@ -145,7 +152,20 @@ internal sealed class HoltburgWorld : ILandblockSource
         }
 
         ObjectSurfaces = ObjectSurface.FromLandblock(Center, _info, _cells.ConvertAll(c => c.EnvCell), _gfxObjs, new Dictionary<uint, Setup>());
+
+        var doors = new Dictionary<string, WorldDoor>();
+        if (!_flat)
+        {
+            CellFixtureReader.FixtureCell doorCell = _cells.Single(c => c.CellId == ObjectPlacements.CottageWestDoorCell);
+            (GfxObj slab, Vector3 origin, Quaternion orientation) = ObjectPlacements.DoorSlab(doorCell, 0xFFFF, ObjectPlacements.CottageWestDoorSlab);
+            doors["cottage-west"] = new WorldDoor("cottage-west", ObjectPlacements.CottageWestDoor, doorCell.CellId, slab, new MoverShape(slab), origin, orientation);
+        }
+
+        Doors = doors;
     }
+
+    /// <summary>The world's doors by name (<see cref="DoorSets"/>): built with the world, registered only as a scene chooses them.</summary>
+    public IReadOnlyDictionary<string, WorldDoor> Doors { get; }
 
     /// <summary>The world's name (<see cref="Worlds"/>).</summary>
     public string World { get; }
@@ -170,6 +190,7 @@ internal sealed class HoltburgWorld : ILandblockSource
         ObjectPlacements.StairPiece => "stair piece",
         ObjectPlacements.CottageCellarStair => "cottage cellar stair",
         ObjectPlacements.BuildingBCellarStair => "building B cellar stair",
+        ObjectPlacements.CottageWestDoor => "cottage west door",
         _ => null,
     };
 
