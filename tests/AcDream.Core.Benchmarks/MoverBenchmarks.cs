@@ -1,16 +1,22 @@
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Testing;
 using BenchmarkDotNet.Attributes;
+using BenchmarkDotNet.Configs;
 
 namespace AcDream.Core.Benchmarks;
 
 /// <summary>
 /// Things that move: the player's body (<see cref="MovementOptions.Player"/>) on random 0.1–0.3 m moves in a 20 m patch of
-/// open ground (the west half of <see cref="World.OpenGround"/>), with no mover registered (the baseline), with 1,000
-/// creatures registered in the landblock 60 m and more away (none near a move), and with a crowd around the moves as
-/// well (on average 10 creatures within 3 m of a start; each 0.48 m by 1.835 m); the last also asking what it touched.
+/// open ground (the west half of <see cref="World.OpenGround"/>). Category "Clear": moves whose straight sweep clears every
+/// creature by 1 cm (double precision), with no mover registered (the baseline), with 1,000 creatures registered in the
+/// landblock 60 m and more away (none near a move), and among a crowd as well (240 creatures 0.48 m × 1.835 m around the
+/// patch, at least 1 m apart: 10 within 3 m of a start on average), also naming what each touched; and the literal
+/// call without and with the 1,000. Category "Touching": moves whose sweep meets a creature of the crowd, without movers
+/// (the baseline) and among them: what colliding with one costs.
 /// </summary>
 [MemoryDiagnoser]
+[GroupBenchmarksBy(BenchmarkLogicalGroupRule.ByCategory)]
 public class MoverBenchmarks
 {
     private const int Moves = 1024;
@@ -18,6 +24,9 @@ public class MoverBenchmarks
     private readonly Vector3[] _starts = new Vector3[Moves];
     private readonly Vector3[] _deltas = new Vector3[Moves];
     private readonly uint[] _cells = new uint[Moves];
+    private readonly Vector3[] _touchingStarts = new Vector3[Moves];
+    private readonly Vector3[] _touchingDeltas = new Vector3[Moves];
+    private readonly uint[] _touchingCells = new uint[Moves];
     private readonly uint[] _touched = new uint[16];
     private PhysicsEngine _none = null!, _far = null!, _near = null!;
 
@@ -44,54 +53,62 @@ public class MoverBenchmarks
         AddFar(_near, centre, new Random(12), 1);
 
         // The crowd: 240 creatures in 26 m × 26 m around the patch, at least 1 m apart.
-        var crowd = new List<Vector2>();
+        var crowd = new List<Vector3>();
         while (crowd.Count < 240)
         {
             var p = new Vector2(17f + (random.NextSingle() * 26f), 77f + (random.NextSingle() * 26f));
-            if (crowd.TrueForAll(c => Vector2.Distance(c, p) >= 1f))
+            if (crowd.TrueForAll(c => Vector2.Distance(new Vector2(c.X, c.Y), p) >= 1f))
             {
-                crowd.Add(p);
-                _near.Movers.Add(5000u + (uint)crowd.Count, Human, new Vector3(p, centre.SampleZ(p.X, p.Y)), (World.Holtburg & 0xFFFF0000u) | World.OutdoorCell(p.X, p.Y), Quaternion.Identity, MoverState.Creature);
+                crowd.Add(new Vector3(p, centre.SampleZ(p.X, p.Y)));
+                _near.Movers.Add(5000u + (uint)crowd.Count, Human, crowd[^1], (World.Holtburg & 0xFFFF0000u) | World.OutdoorCell(p.X, p.Y), Quaternion.Identity, MoverState.Creature);
             }
         }
 
         _far.Movers.Commit();
         _near.Movers.Commit();
         double within = 0;
-        for (int i = 0; i < Moves; i++)
+        for (int clear = 0, touching = 0; clear < Moves || touching < Moves;)
         {
-            Vector2 p;
-            do
+            var p = new Vector2(20f + (random.NextSingle() * 20f), 80f + (random.NextSingle() * 20f));
+            var start = new Vector3(p, centre.SampleZ(p.X, p.Y));
+            Vector3 delta = World.RandomDelta(random, 0.1f, 0.3f);
+            double least = crowd.Min(c => MoverReference.SegmentTo(start, start + delta, c));
+            uint cell = (World.Holtburg & 0xFFFF0000u) | World.OutdoorCell(p.X, p.Y);
+            if (least > 0.97 && clear < Moves)
             {
-                p = new Vector2(20f + (random.NextSingle() * 20f), 80f + (random.NextSingle() * 20f));
+                (_starts[clear], _deltas[clear], _cells[clear]) = (start, delta, cell);
+                within += crowd.Count(c => MoverReference.Apart(c, start) <= 3.0);
+                clear++;
             }
-            while (!crowd.TrueForAll(c => Vector2.Distance(c, p) >= 1f));
-            _starts[i] = new Vector3(p, centre.SampleZ(p.X, p.Y));
-            _cells[i] = (World.Holtburg & 0xFFFF0000u) | World.OutdoorCell(p.X, p.Y);
-            _deltas[i] = World.RandomDelta(random, 0.1f, 0.3f);
-            within += crowd.Count(c => Vector2.Distance(c, p) <= 3f);
-        }
-
-        int stopped = 0, touched = 0;
-        for (int i = 0; i < Moves; i++)
-        {
-            ResolveResult r = _near.Resolve(_starts[i], _cells[i], _deltas[i], World.PlayerStepUp, in Player, 0u, _touched, out int count, out _);
-            (stopped, touched) = (stopped + (r.Outcome is ResolveOutcome.Slid or ResolveOutcome.Wall ? 1 : 0), touched + (count > 0 ? 1 : 0));
-            if (_far.Resolve(_starts[i], _cells[i], _deltas[i], World.PlayerStepUp, in Player) != _none.Resolve(_starts[i], _cells[i], _deltas[i], World.PlayerStepUp, in Player))
+            else if (least < 0.95 && crowd.Min(c => MoverReference.Apart(c, start)) > 0.97 && touching < Moves)
             {
-                throw new InvalidOperationException($"move {i}: the far creatures changed an answer.");
+                (_touchingStarts[touching], _touchingDeltas[touching], _touchingCells[touching]) = (start, delta, cell);
+                touching++;
             }
         }
 
-        Console.WriteLine($"// crowd: {within / Moves:F1} creatures within 3 m of a start on average; {stopped}/{Moves} moves stopped or slid by one, {touched}/{Moves} touched one");
+        int met = 0;
+        for (int i = 0; i < Moves; i++)
+        {
+            if (_far.Resolve(_starts[i], _cells[i], _deltas[i], World.PlayerStepUp, in Player) != _none.Resolve(_starts[i], _cells[i], _deltas[i], World.PlayerStepUp, in Player)
+                || _near.Resolve(_starts[i], _cells[i], _deltas[i], World.PlayerStepUp, in Player) != _none.Resolve(_starts[i], _cells[i], _deltas[i], World.PlayerStepUp, in Player))
+            {
+                throw new InvalidOperationException($"clear move {i}: a creature changed its answer.");
+            }
+
+            _near.Resolve(_touchingStarts[i], _touchingCells[i], _touchingDeltas[i], World.PlayerStepUp, in Player, 0u, _touched, out int count, out _);
+            met += count > 0 ? 1 : 0;
+        }
+
+        Console.WriteLine($"// crowd: {within / Moves:F1} creatures within 3 m of a clear start on average; {met}/{Moves} touching moves named one touched");
     }
 
-    private float Run(PhysicsEngine engine)
+    private static float Run(PhysicsEngine engine, Vector3[] starts, Vector3[] deltas, uint[] cells)
     {
         float sum = 0f;
         for (int i = 0; i < Moves; i++)
         {
-            ResolveResult r = engine.Resolve(_starts[i], _cells[i], _deltas[i], World.PlayerStepUp, in Player);
+            ResolveResult r = engine.Resolve(starts[i], cells[i], deltas[i], World.PlayerStepUp, in Player);
             sum += r.Position.X + r.Position.Y + (r.IsOnGround ? 1f : 0f);
         }
 
@@ -112,18 +129,22 @@ public class MoverBenchmarks
 
     /// <summary><see cref="MovementOptions.Player"/>, no mover registered: the baseline.</summary>
     [Benchmark(Baseline = true, OperationsPerInvoke = Moves)]
-    public float Player_NoMovers() => Run(_none);
+    [BenchmarkCategory("Clear")]
+    public float Player_NoMovers() => Run(_none, _starts, _deltas, _cells);
 
     /// <summary>The same moves with 1,000 creatures registered in the landblock, none near.</summary>
     [Benchmark(OperationsPerInvoke = Moves)]
-    public float Player_ThousandFar() => Run(_far);
+    [BenchmarkCategory("Clear")]
+    public float Player_ThousandFar() => Run(_far, _starts, _deltas, _cells);
 
-    /// <summary>The same moves among the crowd (and the 1,000 far).</summary>
+    /// <summary>The same moves among the crowd (and the 1,000 far): 10 creatures within 3 m, none touched.</summary>
     [Benchmark(OperationsPerInvoke = Moves)]
-    public float Player_CrowdNear() => Run(_near);
+    [BenchmarkCategory("Clear")]
+    public float Player_CrowdNear() => Run(_near, _starts, _deltas, _cells);
 
     /// <summary>Among the crowd, also naming every mover touched (and the report).</summary>
     [Benchmark(OperationsPerInvoke = Moves)]
+    [BenchmarkCategory("Clear")]
     public float Player_CrowdNear_Touches()
     {
         float sum = 0f;
@@ -138,11 +159,23 @@ public class MoverBenchmarks
 
     /// <summary>The literal call, no mover registered.</summary>
     [Benchmark(OperationsPerInvoke = Moves)]
+    [BenchmarkCategory("Clear")]
     public float Literal_NoMovers() => Literal(_none);
 
     /// <summary>The literal call with the 1,000 far creatures.</summary>
     [Benchmark(OperationsPerInvoke = Moves)]
+    [BenchmarkCategory("Clear")]
     public float Literal_ThousandFar() => Literal(_far);
+
+    /// <summary>Moves whose sweep meets a creature of the crowd, no mover registered: the baseline of its category.</summary>
+    [Benchmark(Baseline = true, OperationsPerInvoke = Moves)]
+    [BenchmarkCategory("Touching")]
+    public float Touching_NoMovers() => Run(_none, _touchingStarts, _touchingDeltas, _touchingCells);
+
+    /// <summary>The same moves among the crowd: each meets a creature (slides round it or stops).</summary>
+    [Benchmark(OperationsPerInvoke = Moves)]
+    [BenchmarkCategory("Touching")]
+    public float Touching_Crowd() => Run(_near, _touchingStarts, _touchingDeltas, _touchingCells);
 }
 
 /// <summary>

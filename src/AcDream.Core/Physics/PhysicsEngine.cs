@@ -233,9 +233,13 @@ public sealed partial class PhysicsEngine
         }
     }
 
-    /// <summary>How far from its start a call's queries of the movers reach (metres, seen from above): its move, its body's radius and a metre.</summary>
+    /// <summary>
+    /// How far from its start a call's queries of the movers reach (metres, seen from above): its move and its body's
+    /// radius (every box a call asks about lies within them of its start: its path, the slides along it, the rise, the
+    /// fall and the touches), and 5 cm for the skin, the contact tolerance and the world frame's rounding.
+    /// </summary>
     private static float MoverReach(Vector3 delta, in MovementOptions options) =>
-        new Vector2(delta.X, delta.Y).Length() + (options.Body is MoverBody body ? body.Radius : 0f) + 1f;
+        new Vector2(delta.X, delta.Y).Length() + (options.Body is MoverBody body ? body.Radius : 0f) + 0.05f;
 
     /// <summary>
     /// The move of a checked call: a body's in three dimensions when an effect asks (<see cref="BodyMotion"/>, with the

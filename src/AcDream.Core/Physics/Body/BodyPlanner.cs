@@ -91,7 +91,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         float grow = body.Radius + skin + PhysicsConstants.ContactTolerance;
         Vector2 min = Vector2.Min(local, local + delta) - new Vector2(grow), max = Vector2.Max(local, local + delta) + new Vector2(grow);
         bool open = !WallSet.AnyOutdoors(ref q.Lands, entry, min, max)
-            && !WallSet.TouchesMover(ref q.Lands, entry, BodyMove.Of(local, delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height));
+            && (q.Lands.Movers is null || !WallSet.TouchesMover(ref q.Lands, entry, BodyMove.Of(local, delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height)));
         q.Open = open && !entry.FloorsBeyondWalls && !q.Lands.ReachInto(entry).Meets(min, max);
         return open;
     }

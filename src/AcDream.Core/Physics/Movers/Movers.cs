@@ -251,20 +251,24 @@ public sealed class Movers
 
     /// <summary>
     /// Whether the committed state has no mover whose walls reach into the box (the frame of landblock x, y), read without
-    /// holding it: true only when the state read was whole (its sequence even and unchanged across the read). False may
-    /// also mean "look again, holding it".
+    /// holding it: true only when the state read was whole (its sequence even and unchanged across the read).
+    /// <paramref name="occupied"/>: the state read, when it was whole and has one near; null when it was not whole
+    /// (look again, holding it).
     /// </summary>
-    internal bool NoneNear(int x, int y, Vector2 lo, Vector2 hi)
+    internal bool NoneNear(int x, int y, Vector2 lo, Vector2 hi, out MoverFrame? occupied)
     {
+        occupied = null;
         if (Volatile.Read(ref _current) is not MoverFrame frame)
         {
             return true;
         }
 
         int sequence = Volatile.Read(ref frame.Sequence);
-        bool occupied = frame.Occupied(x, y, lo, hi);
+        bool near = frame.Occupied(x, y, lo, hi);
         Volatile.ReadBarrier(); // the reads above complete before the sequence is read again
-        return !occupied && (sequence & 1) == 0 && Volatile.Read(ref frame.Sequence) == sequence;
+        bool whole = (sequence & 1) == 0 && Volatile.Read(ref frame.Sequence) == sequence;
+        occupied = whole && near ? frame : null;
+        return whole && !near;
     }
 
     private MoverFrame Spare()

@@ -1,5 +1,4 @@
 using System.Numerics;
-using System.Diagnostics.CodeAnalysis;
 using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
@@ -30,97 +29,124 @@ internal struct Neighbourhood
     /// <summary>
     /// Holds the committed movers for this call, for the mover <paramref name="self"/> (0: not a mover) starting at
     /// <paramref name="start"/> in <paramref name="cellId"/>, whose queries all lie within <paramref name="reach"/> of its
-    /// start (metres, seen from above): when no mover's walls reach into that box the call reads no movers at all;
-    /// else the movers met there (not itself) are listed once, and every query of the call reads that list.
+    /// start (metres, seen from above): when no mover's walls reach into that box the call reads no movers at all (and
+    /// holds none); else the movers met there (not itself) are listed once, and every query of the call reads that list.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers committed
     public void Meet(Movers movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self)
     {
         frame.Locate(start, cellId, out int x, out int y, out Vector2 local);
         Vector2 lo = local - new Vector2(reach), hi = local + new Vector2(reach);
-        if (movers.NoneNear(x, y, lo, hi) || movers.Hold() is not MoverFrame held)
+        if (movers.NoneNear(x, y, lo, hi, out MoverFrame? occupied) || movers.Hold() is not MoverFrame held)
         {
             return; // no mover near in the state committed at the call's start: the call reads none
         }
 
-        _held = held;
-        if (!held.Occupied(x, y, lo, hi))
+        if (held != occupied && !held.Occupied(x, y, lo, hi))
         {
+            Physics.Movers.Release(held); // (a later state than the one looked at unheld, with none near)
             return;
         }
 
-        (_movers, _selfId, _self) = (held, self, self == 0 ? MoverState.Unregistered : held.StateOf(self));
-        int n = 0;
-        for (MoverFrame.Near near = held.Around(x, y, lo, hi); near.MoveNext();)
-        {
-            int j = near.Current;
-            CellWalls w = held.Walls[j];
-            if (held.Ids[j] == self || !MoverState.Meets(in held.States[j]) || !held.TryOffset(j, x, y, out Vector2 offset, out _)
-                || !new WallBounds(w.Min, w.Max, float.NegativeInfinity, float.PositiveInfinity).Meets(new WallBox(lo, hi, 0f, 0f), offset))
-            {
-                continue; // itself, not met, or not reaching into the call's box
-            }
-
-            if (n == MoverList.Capacity)
-            {
-                (n, _nearX, _nearY, _nearLo, _nearHi) = (-1, x, y, lo, hi); // more than the list holds: each query asks the grid
-                break;
-            }
-
-            _near[n++] = j;
-        }
-
-        _nearCount = n;
+        MoverCall call = MoverCall.OfThisThread();
+        call.Gather(held, x, y, lo, hi, self);
+        _call = call;
     }
 
     /// <summary>Lets go of the movers held for this call (<see cref="Meet"/>).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Release()
     {
-        if (_held is not null)
+        if (_call is not null)
         {
-            Physics.Movers.Release(_held);
+            _call.Release();
         }
     }
 
-    private MoverFrame? _held;
-    private MoverList _near;
-    private int _nearCount;
-    private int _nearX, _nearY;
-    private Vector2 _nearLo, _nearHi;
-
-    private MoverFrame? _movers;
-    private uint _selfId;
-    private MoverState _self;
+    /// <summary>The movers this call reads (this thread's record, set by <see cref="Meet"/>), or null: none near.</summary>
+    private MoverCall? _call;
 
     /// <summary>The committed movers this call reads, one whole state; null when none is near it.</summary>
-    public readonly MoverFrame? Movers => _movers;
+    public readonly MoverFrame? Movers => _call?.Frame;
 
     /// <summary>The id of the mover that moves (skipped), or 0.</summary>
-    public readonly uint SelfId => _selfId;
+    public readonly uint SelfId => _call?.SelfId ?? 0;
 
     /// <summary>Whether mover <paramref name="index"/> of <see cref="Movers"/> stops this call's move (it is met, and solid to the mover).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public readonly bool Blocks(int index) => MoverState.Blocks(in _self, in _movers!.States[index]);
+    public readonly bool Blocks(int index) => MoverState.Blocks(in _call!.Self, in _call.Frame!.States[index]);
 
     /// <summary>The movers met by this call (not itself) whose walls meet <paramref name="box"/> (the frame of landblock x, y), each once.</summary>
-    [UnscopedRef]
-    public MoverCursor MoversNear(int x, int y, in WallBox box) => new(ref this, x, y, in box);
+    public readonly MoverCursor MoversNear(int x, int y, WallBox box) => new(_call!, x, y, box);
+
+    /// <summary>
+    /// What one call reads of the movers: the state it holds, who is moving, and the movers met near its start (up to
+    /// <see cref="Capacity"/>; more, and each query asks the state's squares over the call's box). One per thread, reused
+    /// by each call of that thread that has movers near (a call is never inside another on one thread).
+    /// </summary>
+    internal sealed class MoverCall
+    {
+        public const int Capacity = 24;
+
+        [ThreadStatic]
+        private static MoverCall? _ofThisThread;
+
+        public readonly int[] Near = new int[Capacity];
+        public MoverFrame? Frame;
+        public uint SelfId;
+        public MoverState Self;
+        public int Count;
+        public int X, Y;
+        public Vector2 Lo, Hi;
+
+        public static MoverCall OfThisThread() => _ofThisThread ??= new MoverCall(); // (once per thread)
+
+        public void Gather(MoverFrame held, int x, int y, Vector2 lo, Vector2 hi, uint self)
+        {
+            (Frame, SelfId, Self, X, Y, Lo, Hi) = (held, self, self == 0 ? MoverState.Unregistered : held.StateOf(self), x, y, lo, hi);
+            int n = 0;
+            for (MoverFrame.Near near = held.Around(x, y, lo, hi); near.MoveNext();)
+            {
+                int j = near.Current;
+                CellWalls w = held.Walls[j];
+                if (held.Ids[j] == self || !MoverState.Meets(in held.States[j]) || !held.TryOffset(j, x, y, out Vector2 offset, out _)
+                    || !new WallBounds(w.Min, w.Max, float.NegativeInfinity, float.PositiveInfinity).Meets(new WallBox(lo, hi, 0f, 0f), offset))
+                {
+                    continue; // itself, not met, or not reaching into the call's box
+                }
+
+                if (n == Capacity)
+                {
+                    n = -1; // more than the list holds: each query asks the squares
+                    break;
+                }
+
+                Near[n++] = j;
+            }
+
+            Count = n;
+        }
+
+        public void Release()
+        {
+            Physics.Movers.Release(Frame);
+            Frame = null;
+        }
+    }
 
     /// <summary>The movers of <see cref="MoversNear"/>: each with its walls' offset from the query's frame and its 3 × 3 slot there.</summary>
     internal ref struct MoverCursor
     {
-        private readonly ref Neighbourhood _lands;
+        private readonly MoverCall _call;
         private readonly WallBox _box;
         private readonly int _x, _y;
         private MoverFrame.Near _grid;
         private int _i;
 
-        public MoverCursor(ref Neighbourhood lands, int x, int y, in WallBox box)
+        public MoverCursor(MoverCall call, int x, int y, WallBox box)
         {
-            _lands = ref lands;
-            (_x, _y, _box, _i) = (x, y, box, 0);
-            _grid = lands._nearCount < 0 ? lands.Movers!.Around(lands._nearX, lands._nearY, lands._nearLo, lands._nearHi) : default;
+            (_call, _x, _y, _box, _i) = (call, x, y, box, 0);
+            _grid = call.Count < 0 ? call.Frame!.Around(call.X, call.Y, call.Lo, call.Hi) : default;
         }
 
         public int Current { get; private set; }
@@ -131,18 +157,18 @@ internal struct Neighbourhood
 
         public bool MoveNext()
         {
-            MoverFrame movers = _lands.Movers!;
+            MoverFrame movers = _call.Frame!;
             while (true)
             {
                 int j;
-                if (_lands._nearCount >= 0)
+                if (_call.Count >= 0)
                 {
-                    if (_i == _lands._nearCount)
+                    if (_i == _call.Count)
                     {
                         return false;
                     }
 
-                    j = _lands._near[_i++];
+                    j = _call.Near[_i++];
                 }
                 else
                 {
@@ -152,7 +178,7 @@ internal struct Neighbourhood
                     }
 
                     j = _grid.Current;
-                    if (movers.Ids[j] == _lands.SelfId || !MoverState.Meets(in movers.States[j]))
+                    if (movers.Ids[j] == _call.SelfId || !MoverState.Meets(in movers.States[j]))
                     {
                         continue;
                     }
@@ -166,14 +192,6 @@ internal struct Neighbourhood
                 }
             }
         }
-    }
-
-    [InlineArray(Capacity)]
-    private struct MoverList
-    {
-        public const int Capacity = 24;
-
-        private int _first;
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
