@@ -46,7 +46,7 @@ internal ref struct WallSet
         _cell = cellIndex;
         var list = new Lister(storage);
         bool listed = cellIndex >= 0
-            ? Reach(entry, cellIndex, in box, ref list) && Movers(ref lands, entry, in box, ref list)
+            ? Reach(entry, cellIndex, in box, ref list) && (lands.Movers is null || Movers(ref lands, entry, in box, ref list))
             : Collect(ref lands, entry, -1, in box, ref list);
         _count = listed ? list.Count : -1;
         _listed = storage;
@@ -248,8 +248,13 @@ internal ref struct WallSet
     /// <summary>Whether a solid mover's walls meet the box and band (a shortcut that finds no wall of the world there must still sweep it).</summary>
     public static bool AnyMover(ref Neighbourhood lands, LandblockEntry entry, in WallBox box)
     {
+        if (lands.Movers is null)
+        {
+            return false;
+        }
+
         var none = new Lister([]);
-        return lands.Movers is not null && !Movers(ref lands, entry, in box, ref none);
+        return !Movers(ref lands, entry, in box, ref none);
     }
 
     /// <summary>The solid movers (to this call's mover) whose walls meet the box and band, from every landblock around.</summary>
