@@ -28,19 +28,9 @@ public sealed partial class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var lands = new Neighbourhood(_registry);
-        if (_movers.Any)
-        {
-            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), 0);
-        }
-
-        try
-        {
-            return Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
-        }
-        finally
-        {
-            lands.Release();
-        }
+        return _movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), 0)
+            ? HeldReported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report)
+            : Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
     }
 
     /// <summary>
@@ -65,20 +55,13 @@ public sealed partial class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var lands = new Neighbourhood(_registry);
-        if (_movers.Any)
+        if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), moverId))
         {
-            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), moverId);
+            return Held(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, literal: false);
         }
 
-        try
-        {
-            var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
-            return Move(ref query, in options, delta.Z);
-        }
-        finally
-        {
-            lands.Release();
-        }
+        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
+        return Move(ref query, in options, delta.Z);
     }
 
     /// <summary>
@@ -113,17 +96,32 @@ public sealed partial class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var lands = new Neighbourhood(_registry);
-        if (_movers.Any)
+        if (!(_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), moverId)))
         {
-            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), moverId);
+            touchedCount = 0; // no mover near
+            return Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
         }
 
         try
         {
             ResolveResult result = Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
-            touchedCount = lands.Movers is null ? 0 : Touches.Along(
+            touchedCount = Touches.Along(
                 _frame, ref lands, currentPos, currentCellId, in result, stepUpHeight, options.Body, report.Wall.Kind == SurfaceKind.Mover ? report.Wall.Id : 0, touched);
             return result;
+        }
+        finally
+        {
+            lands.Release();
+        }
+    }
+
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a call with no mover near has no handler to set up
+    private ResolveResult HeldReported(
+        ref Neighbourhood lands, Vector3 currentPos, uint currentCellId, Vector3 delta, float stepUpHeight, in MovementOptions options, out MoveReport report)
+    {
+        try
+        {
+            return Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
         }
         finally
         {

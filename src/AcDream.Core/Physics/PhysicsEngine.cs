@@ -177,20 +177,13 @@ public sealed partial class PhysicsEngine
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         MovementOptions none = default; // no effects: the spec's engine
         var lands = new Neighbourhood(_registry);
-        if (_movers.Any)
+        if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in none), 0))
         {
-            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in none), 0);
+            return Held(ref lands, currentPos, currentCellId, delta, stepUpHeight, in none, literal: true);
         }
 
-        try
-        {
-            var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
-            return _point.Step(ref query);
-        }
-        finally
-        {
-            lands.Release();
-        }
+        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
+        return _point.Step(ref query);
     }
 
     /// <summary>
@@ -217,15 +210,23 @@ public sealed partial class PhysicsEngine
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var lands = new Neighbourhood(_registry);
-        if (_movers.Any)
+        if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), 0))
         {
-            lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), 0);
+            return Held(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, literal: false);
         }
 
+        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
+        return Move(ref query, in options, delta.Z);
+    }
+
+    /// <summary>A call that holds movers (<see cref="Neighbourhood.Meet"/>): its move, and the hold let go whatever happens.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a call with no mover near has no handler to set up
+    private ResolveResult Held(ref Neighbourhood lands, Vector3 position, uint cellId, Vector3 delta, float stepUp, in MovementOptions options, bool literal)
+    {
         try
         {
-            var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
-            return Move(ref query, in options, delta.Z);
+            var query = new MoveQuery(ref lands, position, cellId, new Vector2(delta.X, delta.Y), stepUp, in options);
+            return literal ? _point.Step(ref query) : Move(ref query, in options, delta.Z);
         }
         finally
         {
@@ -234,12 +235,13 @@ public sealed partial class PhysicsEngine
     }
 
     /// <summary>
-    /// How far from its start a call's queries of the movers reach (metres, seen from above): its move and its body's
-    /// radius (every box a call asks about lies within them of its start: its path, the slides along it, the rise, the
-    /// fall and the touches), and 5 cm for the skin, the contact tolerance and the world frame's rounding.
+    /// How far from its start a call's queries of the movers reach (metres, seen from above): its move (|x| + |y|, at least
+    /// its length) and its body's radius (every box a call asks about lies within them of its start: its path, the slides
+    /// along it, the rise, the fall and the touches), and 5 cm for the skin, the contact tolerance and the world frame's
+    /// rounding.
     /// </summary>
     private static float MoverReach(Vector3 delta, in MovementOptions options) =>
-        new Vector2(delta.X, delta.Y).Length() + (options.Body is MoverBody body ? body.Radius : 0f) + 0.05f;
+        MathF.Abs(delta.X) + MathF.Abs(delta.Y) + (options.Body is MoverBody body ? body.Radius : 0f) + 0.05f;
 
     /// <summary>
     /// The move of a checked call: a body's in three dimensions when an effect asks (<see cref="BodyMotion"/>, with the

@@ -86,6 +86,11 @@ internal sealed class MoverFrame
             return true; // (torn: being rewritten)
         }
 
+        if (lo.X >= 0f && lo.Y >= 0f && hi.X <= size && hi.Y <= size)
+        {
+            return (Cells(lo, hi) & OccupancyOf(keys, bits, x, y)) != 0; // within its landblock: one look
+        }
+
         for (int dx = lo.X < 0f ? -1 : 0; dx <= (hi.X > size ? 1 : 0); dx++)
         {
             for (int dy = lo.Y < 0f ? -1 : 0; dy <= (hi.Y > size ? 1 : 0); dy++)

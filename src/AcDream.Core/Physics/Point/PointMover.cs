@@ -46,9 +46,7 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
     public ResolveResult Step(ref MoveQuery query)
     {
         ResolveResult result = CellIds.IsIndoor(query.CellId) ? indoor.Resolve(ref query) : outdoor.Resolve(ref query);
-        return query.Lands.Movers is null || query.Options.Body is not null || result.IsRefused || query.Entry is null
-            ? result
-            : AmongMovers(ref query, result); // (a body meets the movers in its sweep)
+        return query.Lands.Movers is null ? result : AmongMovers(ref query, result);
     }
 
     /// <summary>
@@ -58,6 +56,11 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Step: only with movers committed
     private ResolveResult AmongMovers(ref MoveQuery q, ResolveResult result)
     {
+        if (q.Options.Body is not null || result.IsRefused || q.Entry is null)
+        {
+            return result; // (a body meets the movers in its sweep)
+        }
+
         MoverFrame movers = q.Lands.Movers!;
         var line = new StepLine(q.P0, q.P1, q.Z + q.StepUp);
         var hit = ObjectHit.Over(0f);

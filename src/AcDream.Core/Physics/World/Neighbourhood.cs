@@ -32,36 +32,31 @@ internal struct Neighbourhood
     /// start (metres, seen from above): when no mover's walls reach into that box the call reads no movers at all (and
     /// holds none); else the movers met there (not itself) are listed once, and every query of the call reads that list.
     /// </summary>
+    /// <returns>Whether the call holds movers (and must <see cref="Release"/> them).</returns>
     [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers committed
-    public void Meet(Movers movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self)
+    public bool Meet(Movers movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self)
     {
         frame.Locate(start, cellId, out int x, out int y, out Vector2 local);
         Vector2 lo = local - new Vector2(reach), hi = local + new Vector2(reach);
         if (movers.NoneNear(x, y, lo, hi, out MoverFrame? occupied) || movers.Hold() is not MoverFrame held)
         {
-            return; // no mover near in the state committed at the call's start: the call reads none
+            return false; // no mover near in the state committed at the call's start: the call reads none
         }
 
         if (held != occupied && !held.Occupied(x, y, lo, hi))
         {
             Physics.Movers.Release(held); // (a later state than the one looked at unheld, with none near)
-            return;
+            return false;
         }
 
         MoverCall call = MoverCall.OfThisThread();
         call.Gather(held, x, y, lo, hi, self);
         _call = call;
+        return true;
     }
 
     /// <summary>Lets go of the movers held for this call (<see cref="Meet"/>).</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public readonly void Release()
-    {
-        if (_call is not null)
-        {
-            _call.Release();
-        }
-    }
+    public readonly void Release() => _call?.Release();
 
     /// <summary>The movers this call reads (this thread's record, set by <see cref="Meet"/>), or null: none near.</summary>
     private MoverCall? _call;
