@@ -226,7 +226,7 @@ public sealed partial class PhysicsEngine
         try
         {
             var query = new MoveQuery(ref lands, position, cellId, new Vector2(delta.X, delta.Y), stepUp, in options);
-            return literal ? _point.Step(ref query) : Move(ref query, in options, delta.Z);
+            return literal ? _point.Checked(ref query, _point.Step(ref query)) : Move(ref query, in options, delta.Z);
         }
         finally
         {

@@ -15,10 +15,10 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
     {
         if (q.Options.SweepStepLength is float sweep)
         {
-            return q.Delta.LengthSquared() > sweep * sweep ? Sweep(ref q, sweep) : SweptStep(ref q);
+            return q.Delta.LengthSquared() > sweep * sweep ? Sweep(ref q, sweep) : Checked(ref q, SweptStep(ref q));
         }
 
-        return Step(ref q);
+        return Checked(ref q, Step(ref q));
     }
 
     /// <summary>Equal sub-steps no longer than <paramref name="sweep"/>, stopping at the first refused one, whose outcome the answer reports.</summary>
@@ -28,11 +28,11 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
         int steps = SubSteps(q.Delta, sweep);
         Vector2 step = q.Delta / steps;
         MoveQuery query = q.Next(q.Position, q.CellId, step);
-        ResolveResult result = SweptStep(ref query);
+        ResolveResult result = Checked(ref query, SweptStep(ref query));
         for (int i = 1; i < steps && !result.IsRefused; i++)
         {
             query = q.Next(result.Position, result.CellId, step);
-            result = Answers.Continue(result, SweptStep(ref query));
+            result = Answers.Continue(result, Checked(ref query, SweptStep(ref query)));
         }
 
         return result;
@@ -43,14 +43,15 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
         (int)Math.Min(Math.Ceiling(move.Length() / (double)sweep), PhysicsConstants.MaxSweepSteps);
 
     /// <summary>One move, end-point checked.</summary>
-    public ResolveResult Step(ref MoveQuery query)
-    {
-        ResolveResult result = CellIds.IsIndoor(query.CellId) ? indoor.Resolve(ref query) : outdoor.Resolve(ref query);
-        return query.Lands.Movers is null ? result : AmongMovers(ref query, result);
-    }
+    public ResolveResult Step(ref MoveQuery query) =>
+        CellIds.IsIndoor(query.CellId) ? indoor.Resolve(ref query) : outdoor.Resolve(ref query);
+
+    /// <summary><paramref name="result"/>, the answer of <paramref name="q"/>'s step, checked against the movers the call holds (none: as it is).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public ResolveResult Checked(ref MoveQuery q, ResolveResult result) => q.Lands.Movers is null ? result : AmongMovers(ref q, result);
 
     /// <summary>
-    /// A point's move that crosses a solid mover's walls at the feet plus the step (as an object's) is refused where it
+    /// A point's move (a body's meets the movers in its sweep) that crosses a solid mover's walls at the feet plus the step (as an object's) is refused where it
     /// stands: the answer of a move of zero from its start, with <see cref="ResolveOutcome.Wall"/> and the wall's normal.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Step: only with movers committed
