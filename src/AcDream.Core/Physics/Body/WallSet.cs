@@ -208,15 +208,38 @@ internal ref struct WallSet
         return MoverTouch(ref lands, movers, entry, in move, lo, hi);
     }
 
+    /// <summary>
+    /// Whether the move's disc passes every one of <paramref name="walls"/>, all upright cylinders, by more than 1 mm (the
+    /// least distance from its path to each axis, seen from above): then its sweep cannot touch them. False for walls
+    /// that are not all cylinders (they are swept).
+    /// </summary>
+    private static bool Clears(CellWalls walls, Vector2 offset, in BodyMove move)
+    {
+        Vector2 p = move.P - offset, d = move.D;
+        float length2 = d.LengthSquared();
+        foreach (ref readonly WallPolygon w in walls.Polygons.AsSpan())
+        {
+            float t = length2 > 0f ? Math.Clamp(Vector2.Dot(w.A - p, d) / length2, 0f, 1f) : 0f;
+            float clear = move.Radius + w.Radius + 0.001f;
+            if (w.Radius <= 0f || Vector2.DistanceSquared(p + (d * t), w.A) <= clear * clear)
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
     [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers near
     private static bool MoverTouch(ref Neighbourhood lands, MoverFrame movers, LandblockEntry entry, in BodyMove move, Vector2 lo, Vector2 hi)
     {
         var hit = WallHit.None;
         for (Neighbourhood.MoverCursor near = lands.MoversNear(entry.X, entry.Y, new WallBox(lo, hi, move.ZLow, move.ZHigh)); near.MoveNext();)
         {
-            if (lands.Blocks(near.Current))
+            CellWalls walls = movers.Walls[near.Current];
+            if (lands.Blocks(near.Current) && !Clears(walls, near.Offset, in move))
             {
-                BodySweep.SweepWalls(movers.Walls[near.Current], near.Offset, lo - near.Offset, hi - near.Offset, in move, ref hit);
+                BodySweep.SweepWalls(walls, near.Offset, lo - near.Offset, hi - near.Offset, in move, ref hit);
                 if (hit.T < 1f || hit.Depth > 0f)
                 {
                     return true;
