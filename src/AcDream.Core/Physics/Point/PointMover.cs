@@ -48,7 +48,8 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
 
     /// <summary><paramref name="result"/>, the answer of <paramref name="q"/>'s step, checked against the movers the call holds (none: as it is).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public ResolveResult Checked(ref MoveQuery q, ResolveResult result) => q.Lands.Movers is null ? result : AmongMovers(ref q, result);
+    public ResolveResult Checked(ref MoveQuery q, ResolveResult result) =>
+        q.Lands.Movers is null || q.Options.Body is not null ? result : AmongMovers(ref q, result); // (a body meets them in its sweep)
 
     /// <summary>
     /// A point's move (a body's meets the movers in its sweep) that crosses a solid mover's walls at the feet plus the step (as an object's) is refused where it
@@ -57,9 +58,9 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Step: only with movers committed
     private ResolveResult AmongMovers(ref MoveQuery q, ResolveResult result)
     {
-        if (q.Options.Body is not null || result.IsRefused || q.Entry is null)
+        if (result.IsRefused || q.Entry is null)
         {
-            return result; // (a body meets the movers in its sweep)
+            return result;
         }
 
         MoverFrame movers = q.Lands.Movers!;
