@@ -236,12 +236,14 @@ public sealed partial class PhysicsEngine
 
     /// <summary>
     /// How far from its start a call's queries of the movers reach (metres, seen from above): its move (|x| + |y|, at least
-    /// its length) and its body's radius (every box a call asks about lies within them of its start: its path, the slides
-    /// along it, the rise, the fall and the touches), and 5 cm for the skin, the contact tolerance and the world frame's
-    /// rounding.
+    /// its length), with vertical motion also its |z| (a fall stopped by a steep face or a creature's top slides off
+    /// sideways by at most half the fall it stopped), and its body's radius (every box a call asks about lies within
+    /// them of its start: its path, the slides along it, the rise, the fall and the touches), and 5 cm for the skin, the
+    /// contact tolerance and the world frame's rounding.
     /// </summary>
     private static float MoverReach(Vector3 delta, in MovementOptions options) =>
-        MathF.Abs(delta.X) + MathF.Abs(delta.Y) + (options.Body is MoverBody body ? body.Radius : 0f) + 0.05f;
+        MathF.Abs(delta.X) + MathF.Abs(delta.Y) + (options.MovesVertically ? MathF.Abs(delta.Z) : 0f)
+        + (options.Body is MoverBody body ? body.Radius : 0f) + 0.05f;
 
     /// <summary>
     /// The move of a checked call: a body's in three dimensions when an effect asks (<see cref="BodyMotion"/>, with the

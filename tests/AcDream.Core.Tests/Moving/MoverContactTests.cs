@@ -213,6 +213,35 @@ public class MoverContactTests(ITestOutputHelper output)
         held.Should().BeGreaterThan(0, "it came down on the creature's top");
     }
 
+    [Theory]
+    [InlineData("centred")]
+    [InlineData("global")]
+    public void A_fast_fall_that_slides_off_one_creature_never_ends_inside_the_next(string frame)
+    {
+        // Falls of 1.6 m a call onto a creature's top near its side, another creature beyond that side: the slide off
+        // the first (up to half the fall stopped) may carry the body towards the second, which the call must meet too.
+        PhysicsEngine engine = Field(frame);
+        Vector3 first = At(engine, Axis), second = At(engine, Axis + new Vector2(1.5f, 0f));
+        engine.Movers.Add(2, MoverKit.Human, first, Outdoor, Quaternion.Identity, MoverState.Creature);
+        engine.Movers.Add(3, MoverKit.Human, second, Outdoor, Quaternion.Identity, MoverState.Creature);
+        engine.Movers.Commit();
+        foreach (float offset in new[] { 0.2f, 0.4f, 0.6f })
+        {
+            var at = new ResolveResult(first + new Vector3(offset, 0f, 6f), Outdoor, false);
+            for (int f = 0; f < 40 && !at.IsOnGround; f++)
+            {
+                at = engine.Resolve(at.Position, at.CellId, new Vector3(0f, 0f, -1.6f), 0.6f, MovementOptions.Player);
+                if (at.Position.Z < first.Z + MoverKit.HumanHeight - 0.001f)
+                {
+                    MoverReference.Apart(at.Position, first).Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"offset {offset}, call {f}: {at}");
+                    MoverReference.Apart(at.Position, second).Should().BeGreaterThanOrEqualTo(Touch - 0.001, $"offset {offset}, call {f}: {at}");
+                }
+            }
+
+            output.WriteLine($"offset {offset}: {at}");
+        }
+    }
+
     [Fact]
     public void A_creature_across_a_seam_stops_a_body_in_the_neighbour_landblock()
     {

@@ -28,7 +28,8 @@ public enum DoorState : byte
 /// <see cref="Close"/>) are kept until <see cref="Commit"/> publishes them all at once: a call sees one whole committed
 /// state from its start to its end, never part of an update. Changes are made from one thread at a time (they are
 /// serialised); any number of threads resolve meanwhile and never wait for them. Moving a mover allocates nothing; a
-/// commit allocates only when more movers are registered than ever before or a reader still holds every spare state.
+/// commit allocates only when more movers are registered than ever before, when a reader still holds every spare state,
+/// or when a registration slot takes a mover of another shape (after an <see cref="Add"/> or a <see cref="Remove"/>).
 /// </para>
 /// <para>With no movers committed, every answer is the engine's without them, bit for bit, and costs one null check.</para>
 /// </remarks>
@@ -266,7 +267,7 @@ public sealed class Movers
         int sequence = Volatile.Read(ref frame.Sequence);
         bool near = frame.Occupied(x, y, lo, hi);
         Volatile.ReadBarrier(); // the reads above complete before the sequence is read again
-        bool whole = (sequence & 1) == 0 && Volatile.Read(ref frame.Sequence) == sequence;
+        bool whole = (sequence & 1) == 0 && Volatile.Read(ref frame.Sequence) == sequence && ReferenceEquals(Volatile.Read(ref _current), frame);
         occupied = whole && near ? frame : null;
         return whole && !near;
     }
@@ -338,10 +339,12 @@ public sealed class Movers
             size *= 2;
         }
 
-        if (f.Heads.Length != size + 1)
+        if (f.Heads.Length < size + 1)
         {
-            (f.Heads, f.ById) = (new int[size + 1], new int[size]);
+            (f.Heads, f.ById) = (new int[size + 1], new int[size]); // grown only: fewer movers keep the larger tables
         }
+
+        size = f.Heads.Length - 1;
 
         (f.Mask, int[] heads) = (size - 1, f.Heads);
         Array.Clear(heads);
@@ -386,10 +389,12 @@ public sealed class Movers
     /// <summary>Marks in each landblock's bits the outdoor cells every mover's walls reach into (its own and its neighbours').</summary>
     private static void Occupy(MoverFrame f, int size)
     {
-        if (f.Landblocks.Length != size)
+        if (f.Landblocks.Length < size)
         {
-            (f.Landblocks, f.Occupancy) = (new int[size], new ulong[size]);
+            (f.Landblocks, f.Occupancy) = (new int[size], new ulong[size]); // grown only
         }
+
+        size = f.Landblocks.Length;
 
         Array.Clear(f.Landblocks);
         const float side = PhysicsConstants.LandblockSize;

@@ -161,11 +161,6 @@ internal sealed class CellWalls
         return walls.Count == 0 ? None : new CellWalls([.. walls], [.. vertices], steep);
     }
 
-    /// <summary>
-    /// Whether the polygon is a vertical rectangle: its normal horizontal (within 1e-4) and every vertex
-    /// at one of its two ends along the wall and at its lowest or highest Z (within
-    /// <see cref="PhysicsConstants.EdgeTolerance"/>); then the ends' points seen from above.
-    /// </summary>
     /// <summary>A copy with arrays of its own, for <see cref="PlaceFrom"/> to write into.</summary>
     public CellWalls Copy() => new((WallPolygon[])Polygons.Clone(), (Vector3[])Vertices.Clone(), HasSteep);
 
@@ -216,6 +211,11 @@ internal sealed class CellWalls
     private static Vector2 Turn(Vector2 p, double cos, double sin, Vector3 origin) =>
         new((float)(origin.X + ((cos * p.X) - (sin * p.Y))), (float)(origin.Y + ((sin * p.X) + (cos * p.Y))));
 
+    /// <summary>
+    /// Whether the polygon is a vertical rectangle: its normal horizontal (within 1e-4) and every vertex
+    /// at one of its two ends along the wall and at its lowest or highest Z (within
+    /// <see cref="PhysicsConstants.EdgeTolerance"/>); then the ends' points seen from above.
+    /// </summary>
     private static (bool Upright, Vector2 A, Vector2 B) Upright(Vector3[] v, Vector3 normal, float zMin, float zMax)
     {
         var along = new Vector2(-normal.Y, normal.X);
