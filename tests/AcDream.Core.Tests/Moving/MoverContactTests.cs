@@ -242,6 +242,32 @@ public class MoverContactTests(ITestOutputHelper output)
         }
     }
 
+    [Theory]
+    [InlineData("centred")]
+    [InlineData("global")]
+    public void A_mover_lower_than_the_step_stops_a_body_and_a_point(string frame)
+    {
+        // A rat: 0.3 m by 0.5 m, under a player's 0.6 m step; a body does not step onto a mover, so it must stop.
+        PhysicsEngine engine = Field(frame);
+        Vector3 rat = At(engine, Axis);
+        engine.Movers.Add(4, MoverShape.Cylinder(0.3f, 0.5f), rat, Outdoor, Quaternion.Identity, MoverState.Creature);
+        engine.Movers.Commit();
+        foreach (float speed in new[] { 2f, 20f, 50f })
+        {
+            var at = new ResolveResult(At(engine, Axis - new Vector2(3f, 0f)), Outdoor, true);
+            for (int i = 0; i < (int)(6f / (speed * Frame)) + 2; i++)
+            {
+                at = engine.Resolve(at.Position, at.CellId, new Vector3(speed * Frame, 0f, 0f), 0.6f, MovementOptions.Player);
+                MoverReference.Apart(at.Position, rat).Should().BeGreaterThanOrEqualTo(0.78 - 0.001, $"{speed} m/s, frame {i}: {at}");
+            }
+
+            MoverReference.Apart(at.Position, rat).Should().BeLessThan(0.79, $"it reached the rat at {speed} m/s: {at}");
+        }
+
+        ResolveResult point = engine.Resolve(At(engine, Axis - new Vector2(2f, 0f)), Outdoor, new Vector3(4f, 0f, 0f), 0.6f);
+        point.Outcome.Should().Be(ResolveOutcome.Wall, $"a point crossing it under its step line: {point}");
+    }
+
     [Fact]
     public void A_creature_across_a_seam_stops_a_body_in_the_neighbour_landblock()
     {

@@ -49,7 +49,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
             float grow = move.Radius + PhysicsConstants.ContactTolerance;
             Vector2 end = local + q.Delta;
             if (open.IsOpen(Vector2.Min(local, end) - new Vector2(grow), Vector2.Max(local, end) + new Vector2(grow), move.ZLow, move.ZHigh, local - new Vector2(reach), local + new Vector2(reach))
-                && !WallSet.TouchesMover(ref q.Lands, entry, in move))
+                && !WallSet.TouchesMover(ref q.Lands, entry, in move, q.StepUp))
             {
                 (points[0], points[1], path.Count) = (local, end, 2);
                 q.Open = entry.Cells[cellIndex] is { Objects.Length: 0 } cell && !float.IsNaN(cell.FloorLevel);
@@ -57,7 +57,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
             }
         }
 
-        var walls = new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh));
+        var walls = new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), move.ZLow, move.ZHigh), q.StepUp);
         BodySweep.Slide(in walls, in move, points, ref path);
         return true;
     }
@@ -91,7 +91,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         float grow = body.Radius + skin + PhysicsConstants.ContactTolerance;
         Vector2 min = Vector2.Min(local, local + delta) - new Vector2(grow), max = Vector2.Max(local, local + delta) + new Vector2(grow);
         bool open = !WallSet.AnyOutdoors(ref q.Lands, entry, min, max)
-            && (q.Lands.Movers is null || !WallSet.TouchesMover(ref q.Lands, entry, BodyMove.Of(local, delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height)));
+            && (q.Lands.Movers is null || !WallSet.TouchesMover(ref q.Lands, entry, BodyMove.Of(local, delta, body.Radius + skin, 0.5f * skin, q.Z + q.StepUp, q.Z + body.Height), q.StepUp));
         q.Open = open && !entry.FloorsBeyondWalls && !q.Lands.ReachInto(entry).Meets(min, max);
         return open;
     }
@@ -118,7 +118,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         float reach = radius + PhysicsConstants.ContactTolerance;
         var still = new BodyMove(local, Vector2.Zero, radius, radius, 0.5f * skin, position.Z + q.StepUp, position.Z + body.Height);
-        new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), still.ZLow, still.ZHigh))
+        new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(local - new Vector2(reach), local + new Vector2(reach), still.ZLow, still.ZHigh), q.StepUp)
             .Sweep(still, ref hit);
         outward = hit.Outward;
         float overlap = hit.Depth - (0.5f * skin);
@@ -157,7 +157,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         float reach = length + step.Radius + PhysicsConstants.ContactTolerance;
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         var hit = WallHit.None;
-        new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(start - new Vector2(reach), start + new Vector2(reach), step.ZLow, step.ZHigh))
+        new WallSet(ref q.Lands, entry, cellIndex, sources, new WallBox(start - new Vector2(reach), start + new Vector2(reach), step.ZLow, step.ZHigh), q.StepUp)
             .Sweep(step, ref hit);
         normal = hit.Normal;
         if (!((1f - hit.T) * length > PhysicsConstants.ContactTolerance))

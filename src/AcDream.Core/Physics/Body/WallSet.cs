@@ -34,20 +34,22 @@ internal ref struct WallSet
     private readonly int _cell;
     private readonly Span<int> _listed;
     private readonly int _count;
+    private readonly float _moverDrop;
 
     /// <summary>
     /// The walls around a mover in landblock <paramref name="entry"/> (in its cell <paramref name="cellIndex"/>,
     /// or outdoors: −1) whose sweeps stay in <paramref name="box"/>, listed in <paramref name="storage"/> (when they fit).
     /// </summary>
-    public WallSet(ref Neighbourhood lands, LandblockEntry entry, int cellIndex, Span<int> storage, in WallBox box)
+    public WallSet(ref Neighbourhood lands, LandblockEntry entry, int cellIndex, Span<int> storage, in WallBox box, float moverDrop = 0f)
     {
+        _moverDrop = moverDrop;
         _lands = ref lands;
         _entry = entry;
         _cell = cellIndex;
         var list = new Lister(storage);
         bool listed = cellIndex >= 0
-            ? Reach(entry, cellIndex, in box, ref list) && (lands.Movers is null || Movers(ref lands, entry, in box, ref list))
-            : Collect(ref lands, entry, -1, in box, ref list);
+            ? Reach(entry, cellIndex, in box, ref list) && (lands.Movers is null || Movers(ref lands, entry, box with { ZLow = box.ZLow - moverDrop }, ref list))
+            : Collect(ref lands, entry, -1, in box, ref list, moverDrop);
         _count = listed ? list.Count : -1;
         _listed = storage;
     }
@@ -91,11 +93,11 @@ internal ref struct WallSet
     {
         float grow = move.Radius + PhysicsConstants.ContactTolerance;
         Vector2 lo = Vector2.Min(move.P, move.P + move.D) - new Vector2(grow), hi = Vector2.Max(move.P, move.P + move.D) + new Vector2(grow);
-        var sweep = new Sweeper(ref _lands, _entry, in move, ref hit, lo, hi);
+        var sweep = new Sweeper(ref _lands, _entry, in move, ref hit, lo, hi, _moverDrop);
         if (_count < 0)
         {
             // More sources than the list holds: the grids, over this sweep's box and band.
-            Collect(ref _lands, _entry, _cell, new WallBox(lo, hi, move.ZLow, move.ZHigh), ref sweep);
+            Collect(ref _lands, _entry, _cell, new WallBox(lo, hi, move.ZLow, move.ZHigh), ref sweep, _moverDrop);
             return;
         }
 
@@ -196,7 +198,7 @@ internal ref struct WallSet
     /// Whether the body's sweep <paramref name="move"/> (the frame of <paramref name="entry"/>) touches a solid mover, or
     /// starts overlapping one: movers near a move but clear of its sweep leave it on open ground.
     /// </summary>
-    public static bool TouchesMover(ref Neighbourhood lands, LandblockEntry entry, in BodyMove move)
+    public static bool TouchesMover(ref Neighbourhood lands, LandblockEntry entry, in BodyMove move, float moverDrop)
     {
         if (lands.Movers is not MoverFrame movers)
         {
@@ -205,7 +207,7 @@ internal ref struct WallSet
 
         float grow = move.Radius + PhysicsConstants.ContactTolerance;
         Vector2 lo = Vector2.Min(move.P, move.P + move.D) - new Vector2(grow), hi = Vector2.Max(move.P, move.P + move.D) + new Vector2(grow);
-        return MoverTouch(ref lands, movers, entry, in move, lo, hi);
+        return MoverTouch(ref lands, movers, entry, move with { ZLow = move.ZLow - moverDrop }, lo, hi);
     }
 
     /// <summary>
@@ -256,7 +258,7 @@ internal ref struct WallSet
     /// building; outdoors (−1), the buildings' cells and outdoor objects of <paramref name="entry"/> and of a
     /// neighbour whose reach meets the box. False when the sink stopped taking them.
     /// </summary>
-    private static bool Collect<T>(ref Neighbourhood lands, LandblockEntry entry, int cellIndex, in WallBox box, ref T sink)
+    private static bool Collect<T>(ref Neighbourhood lands, LandblockEntry entry, int cellIndex, in WallBox box, ref T sink, float moverDrop = 0f)
         where T : ISourceSink, allows ref struct
     {
         if (!Collect(entry, Own, cellIndex, in box, ref sink))
@@ -265,7 +267,7 @@ internal ref struct WallSet
         }
 
         return (cellIndex >= 0 || !lands.ReachInto(entry).Meets(box.Lo, box.Hi) || CollectAcross(ref lands, entry, in box, ref sink))
-            && (lands.Movers is null || Movers(ref lands, entry, in box, ref sink));
+            && (lands.Movers is null || Movers(ref lands, entry, box with { ZLow = box.ZLow - moverDrop }, ref sink));
     }
 
     /// <summary>Whether a solid mover's walls meet the box and band (a shortcut that finds no wall of the world there must still sweep it).</summary>
@@ -398,7 +400,7 @@ internal ref struct WallSet
     }
 
     /// <summary>Sweeps a body move against each source's walls (a cell's with its objects', or an outdoor object's).</summary>
-    private ref struct Sweeper(ref Neighbourhood lands, LandblockEntry entry, in BodyMove move, ref WallHit hit, Vector2 lo, Vector2 hi) : ISourceSink
+    private ref struct Sweeper(ref Neighbourhood lands, LandblockEntry entry, in BodyMove move, ref WallHit hit, Vector2 lo, Vector2 hi, float moverDrop) : ISourceSink
     {
         private readonly ref Neighbourhood _lands = ref lands;
         private readonly ref readonly BodyMove _move = ref move;
@@ -414,7 +416,7 @@ internal ref struct WallSet
             {
                 MoverFrame movers = _lands.Movers!;
                 _hit.Current = new WallSource(SurfaceKind.Mover, movers.Ids[index]);
-                BodySweep.SweepWalls(movers.Walls[index], offset, boxLo, boxHi, in _move, ref _hit);
+                BodySweep.SweepWalls(movers.Walls[index], offset, boxLo, boxHi, _move with { ZLow = _move.ZLow - moverDrop }, ref _hit);
                 return true;
             }
 

@@ -52,7 +52,8 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
         q.Lands.Movers is null || q.Options.Body is not null ? result : AmongMovers(ref q, result); // (a body meets them in its sweep)
 
     /// <summary>
-    /// A point's move (a body's meets the movers in its sweep) that crosses a solid mover's walls at the feet plus the step (as an object's) is refused where it
+    /// A point's move (a body's meets the movers in its sweep) that crosses a solid mover's walls at the feet plus the step
+    /// (as an object's) or just over the feet (a mover lower than the step) is refused where it
     /// stands: the answer of a move of zero from its start, with <see cref="ResolveOutcome.Wall"/> and the wall's normal.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Step: only with movers committed
@@ -65,11 +66,14 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
 
         MoverFrame movers = q.Lands.Movers!;
         var line = new StepLine(q.P0, q.P1, q.Z + q.StepUp);
+        var feet = new StepLine(q.P0, q.P1, q.Z + PhysicsConstants.GroundTolerance); // (a mover lower than the step is met too)
         var hit = ObjectHit.Over(0f);
         uint met = 0;
-        for (Neighbourhood.MoverCursor near = q.Lands.MoversNear(q.Entry.X, q.Entry.Y, new WallBox(line.Lo, line.Hi, line.H, line.H)); near.MoveNext();)
+        for (Neighbourhood.MoverCursor near = q.Lands.MoversNear(q.Entry.X, q.Entry.Y, new WallBox(line.Lo, line.Hi, feet.H, line.H)); near.MoveNext();)
         {
-            if (q.Lands.Blocks(near.Current) && line.Less(near.Offset).FirstCrossing(movers.Walls[near.Current], ref hit))
+            CellWalls walls = movers.Walls[near.Current];
+            if (q.Lands.Blocks(near.Current)
+                && (line.Less(near.Offset).FirstCrossing(walls, ref hit) | feet.Less(near.Offset).FirstCrossing(walls, ref hit)))
             {
                 met = movers.Ids[near.Current];
             }
