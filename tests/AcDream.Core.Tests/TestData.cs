@@ -77,6 +77,20 @@ internal static class HoltburgCells
     public static List<CellSurface> Surfaces() => Fixtures.Keys.Order().Select(Surface).ToList();
 
     /// <summary>
+    /// A random start for the engine of <see cref="OnHills"/> (world <paramref name="origin"/> is Holtburg's corner): in
+    /// one of <paramref name="cells"/> over the cottages' footprint, or outdoors anywhere in the landblock; 85–145 m up.
+    /// </summary>
+    public static (Vector3 Position, uint Cell) RandomStart(Random random, Vector3 origin, uint[] cells, bool indoor)
+    {
+        uint cell = indoor ? cells[random.Next(cells.Length)] : 0xA9B40000u;
+        var position = origin + new Vector3(
+            indoor ? 124 + (float)(random.NextDouble() * 42) : (float)(random.NextDouble() * 192),
+            indoor ? -1 + (float)(random.NextDouble() * 21) : (float)(random.NextDouble() * 192),
+            85 + (float)(random.NextDouble() * 60));
+        return (position, cell);
+    }
+
+    /// <summary>
     /// The real cells on random hills (height index 150–199 at random, 188 on the vertices x 5–6, y 0–1; the
     /// non-linear table) with the south neighbour flat at 94 m, in the global frame or one centred on Holtburg.
     /// </summary>

@@ -52,17 +52,7 @@ public sealed partial class PhysicsEngine
         float stepUpHeight,
         in MovementOptions options,
         uint moverId)
-    {
-        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry);
-        if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), moverId))
-        {
-            return Held(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, literal: false);
-        }
-
-        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
-        return Move(ref query, in options, delta.Z);
-    }
+        => Moved(currentPos, currentCellId, delta, stepUpHeight, in options, moverId);
 
     /// <summary>
     /// <see cref="Resolve(Vector3, uint, Vector3, float, in MovementOptions, uint)"/>, what the move met

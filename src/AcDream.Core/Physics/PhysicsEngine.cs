@@ -207,10 +207,18 @@ public sealed partial class PhysicsEngine
         Vector3 delta,
         float stepUpHeight,
         in MovementOptions options)
+        => Moved(currentPos, currentCellId, delta, stepUpHeight, in options, 0);
+
+    /// <summary>
+    /// The call with options, as the mover <paramref name="self"/> (0: none): checked, the movers near held when there
+    /// are any (<see cref="Held"/>), else the move itself. Inlined into both public calls, which are one code.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private ResolveResult Moved(Vector3 currentPos, uint currentCellId, Vector3 delta, float stepUpHeight, in MovementOptions options, uint self)
     {
         MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
         var lands = new Neighbourhood(_registry);
-        if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), 0))
+        if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), self))
         {
             return Held(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, literal: false);
         }

@@ -23,12 +23,7 @@ public class DefaultOptionsTests
         uint[] cells = [.. HoltburgCells.Fixtures.Keys];
         for (int n = 0; n < 5000; n++)
         {
-            bool indoor = n % 2 == 1;
-            uint cell = indoor ? cells[random.Next(cells.Length)] : 0xA9B40000u;
-            var pos = origin + new Vector3(
-                indoor ? 124 + (float)(random.NextDouble() * 42) : (float)(random.NextDouble() * 192),
-                indoor ? -1 + (float)(random.NextDouble() * 21) : (float)(random.NextDouble() * 192),
-                85 + (float)(random.NextDouble() * 60));
+            (Vector3 pos, uint cell) = HoltburgCells.RandomStart(random, origin, cells, indoor: n % 2 == 1);
             var delta = new Vector3((float)(random.NextDouble() * 4) - 2, (float)(random.NextDouble() * 4) - 2, 0);
             float step = (float)(random.NextDouble() * 2);
 

@@ -22,12 +22,7 @@ public class MoverContactTests(ITestOutputHelper output)
         { "global", 1f }, { "global", 5f }, { "global", 20f }, { "global", 50f },
     };
 
-    private static PhysicsEngine Field(string frame)
-    {
-        PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(Landblock);
-        engine.AddLandblock(Landblock, TestData.FlatTerrain(Ground, Landblock), []);
-        return engine;
-    }
+    private static PhysicsEngine Field(string frame) => MoverSmokeTests.Field(frame);
 
     private static Vector3 At(PhysicsEngine engine, Vector2 local) => engine.ToWorld(Landblock, new Vector3(local, Ground));
 

@@ -22,14 +22,7 @@ public class MoverInvariantTests(ITestOutputHelper output)
     {
         const uint landblock = MoverSmokeTests.Landblock, cell = MoverSmokeTests.Outdoor;
         const float ground = MoverSmokeTests.Ground;
-        PhysicsEngine Make()
-        {
-            PhysicsEngine e = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(landblock);
-            e.AddLandblock(landblock, TestData.FlatTerrain(ground, landblock), []);
-            return e;
-        }
-
-        PhysicsEngine engine = Make(), bare = Make();
+        PhysicsEngine engine = MoverSmokeTests.Field(frame), bare = MoverSmokeTests.Field(frame);
         var random = new Random(seed);
         var creatures = new List<Vector3>();
         for (uint i = 1; i <= 60; i++)

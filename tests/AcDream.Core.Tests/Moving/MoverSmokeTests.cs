@@ -12,9 +12,10 @@ public class MoverSmokeTests(ITestOutputHelper output)
     internal const float Ground = 50f;
     internal static readonly Vector2 Axis = new(96f, 96f);
 
-    internal static PhysicsEngine Field(uint centre = Landblock)
+    /// <summary>Flat ground at <see cref="Ground"/> in <see cref="Landblock"/>, in the frame centred on it or the global one.</summary>
+    internal static PhysicsEngine Field(string frame = "centred")
     {
-        var engine = new PhysicsEngine(centre);
+        PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(Landblock);
         engine.AddLandblock(Landblock, TestData.FlatTerrain(Ground, Landblock), []);
         return engine;
     }

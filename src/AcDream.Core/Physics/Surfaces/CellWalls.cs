@@ -184,7 +184,7 @@ internal sealed class CellWalls
         for (int i = 0; i < Polygons.Length; i++)
         {
             WallPolygon w = local.Polygons[i];
-            Vector2 a = Turn(w.A, cos, sin, origin), b = Turn(w.B, cos, sin, origin);
+            Vector2 a = w.IsUpright ? Turn(w.A, cos, sin, origin) : default, b = w.IsUpright && w.Radius == 0f ? Turn(w.B, cos, sin, origin) : a;
             Vector2 lo = a - new Vector2(w.Radius), hi = a + new Vector2(w.Radius);
             if (w.Radius == 0f)
             {
@@ -198,7 +198,7 @@ internal sealed class CellWalls
             var placed = w with
             {
                 ZMin = (float)((double)origin.Z + w.ZMin), ZMax = (float)((double)origin.Z + w.ZMax), Min = lo, Max = hi,
-                A = w.IsUpright ? a : default, B = w.IsUpright ? b : default,
+                A = a, B = b,
             };
             Polygons[i] = placed;
             Extents[i] = new WallExtent(placed);

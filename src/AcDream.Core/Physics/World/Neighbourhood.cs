@@ -64,9 +64,6 @@ internal struct Neighbourhood
     /// <summary>The committed movers this call reads, one whole state; null when none is near it.</summary>
     public readonly MoverFrame? Movers => _call?.Frame;
 
-    /// <summary>The id of the mover that moves (skipped), or 0.</summary>
-    public readonly uint SelfId => _call?.SelfId ?? 0;
-
     /// <summary>Whether mover <paramref name="index"/> of <see cref="Movers"/> stops this call's move (it is met, and solid to the mover).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly bool Blocks(int index) => MoverState.Blocks(in _call!.Self, in _call.Frame!.States[index]);
