@@ -34,6 +34,9 @@ public enum SurfaceKind : byte
 
     /// <summary>A registered mover's walls (<see cref="Movers"/>): the contact's id is the mover's.</summary>
     Mover,
+
+    /// <summary>An indoor cell's polygon facing down (unit normal Z at most −<see cref="PhysicsConstants.FloorZ"/>), as a cast (<see cref="PhysicsEngine.Cast"/>) meets it; the id is the cell's. A move reports a ceiling as <see cref="CellWall"/>.</summary>
+    CellCeiling,
 }
 
 /// <summary>A surface a move met.</summary>

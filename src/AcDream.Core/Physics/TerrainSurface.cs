@@ -197,6 +197,16 @@ public sealed class TerrainSurface
         return new Vector3((float)(-gx * n), (float)(-gy * n), (float)n);
     }
 
+    /// <summary>The corner heights of terrain cell (cx, cy), 0..7 each, metres.</summary>
+    internal void Corners(int cx, int cy, out double sw, out double nw, out double se, out double ne)
+    {
+        int i = (cx * Side) + cy;
+        (sw, nw, se, ne) = (_z[i], _z[i + 1], _z[i + Side], _z[i + Side + 1]);
+    }
+
+    /// <summary>With the game's triangles: whether terrain cell (cx, cy) is split SW–NE (else SE–NW).</summary>
+    internal bool IsSplitSwToNe(int cx, int cy) => (_swToNeCells & (1ul << ((cx * PhysicsConstants.CellsPerSide) + cy))) != 0;
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static void Locate(float x, float y, out int cx, out int cy, out double u, out double v)
     {

@@ -83,7 +83,8 @@ public readonly record struct MoverState(
 
     private bool IsPlayer => (Description & ObjectDescriptionFlags.Player) != 0;
 
-    private bool IsCreature => Kind == MoverKind.Creature || IsPlayer;
+    /// <summary>A creature or a player: what a cast that ignores creatures passes.</summary>
+    internal bool IsCreature => Kind == MoverKind.Creature || IsPlayer;
 
     /// <summary>Whether <paramref name="target"/> is met at all by a move of this one: not both Ethereal and IgnoreCollisions.</summary>
     public static bool Meets(in MoverState target) =>

@@ -1,0 +1,36 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>What a cast (<see cref="PhysicsEngine.Cast"/>) passes through; flags may be combined.</summary>
+[Flags]
+public enum CastFilter : byte
+{
+    /// <summary>It stops at everything: terrain, cells, objects and every registered mover, Ethereal or not (a pointer's ray).</summary>
+    None = 0,
+
+    /// <summary>It passes creatures and players (a camera's).</summary>
+    IgnoreCreatures = 1,
+
+    /// <summary>It stops only at solid things: movers that are Ethereal (an open door, a spell's swirl) are passed.</summary>
+    SolidOnly = 2,
+}
+
+/// <summary>The shape and filters of a cast.</summary>
+/// <param name="Radius">The sphere's radius, metres, ≥ 0; 0 is a ray.</param>
+/// <param name="Filter">What it passes.</param>
+/// <param name="IgnoreId">A mover id or an object's GfxObj/Setup id it passes (the player itself); 0: none.</param>
+public readonly record struct CastOptions(float Radius, CastFilter Filter = CastFilter.None, uint IgnoreId = 0);
+
+/// <summary>
+/// The answer of a cast: the first contact of the sphere along its segment, or its end when it met nothing.
+/// </summary>
+/// <param name="Hit">Whether it met something before its end (or was stopped by land that is not loaded: <see cref="Kind"/> <see cref="SurfaceKind.None"/>).</param>
+/// <param name="Fraction">How far along the segment, 0..1, the sphere's centre is at the contact; 1 when it met nothing.</param>
+/// <param name="Position">The sphere's centre there, world metres.</param>
+/// <param name="Point">The point of contact on the surface, world metres (<see cref="Position"/> less the radius along <see cref="Normal"/>); <see cref="Position"/> when it met nothing.</param>
+/// <param name="Normal">The unit normal of the contact, world axes, pointing at the sphere (for a polygon met on its face, the polygon's; at an edge or a corner, from it to the centre); zero when it met nothing.</param>
+/// <param name="Kind">What it met: terrain, a cell's floor, wall or ceiling, an object's floor, wall, shell or cylinder, or a mover.</param>
+/// <param name="Id">Whose it is (as <see cref="SurfaceContact.Id"/>): the outdoor cell for terrain, the cell, the object's GfxObj/Setup id, or the mover's id; 0 when it met nothing.</param>
+/// <param name="CellId">The cell the sphere's centre is in at <see cref="Position"/>: an indoor cell reached through portals, or the outdoor cell under it.</param>
+public readonly record struct CastHit(bool Hit, float Fraction, Vector3 Position, Vector3 Point, Vector3 Normal, SurfaceKind Kind, uint Id, uint CellId);

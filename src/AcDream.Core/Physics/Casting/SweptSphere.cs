@@ -1,0 +1,434 @@
+using System.Numerics;
+using System.Runtime.CompilerServices;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>A point or direction in double precision, metres; only what a cast's arithmetic needs.</summary>
+internal readonly record struct D3(double X, double Y, double Z)
+{
+    public static D3 operator +(D3 a, D3 b) => new(a.X + b.X, a.Y + b.Y, a.Z + b.Z);
+
+    public static D3 operator -(D3 a, D3 b) => new(a.X - b.X, a.Y - b.Y, a.Z - b.Z);
+
+    public static D3 operator -(D3 a) => new(-a.X, -a.Y, -a.Z);
+
+    public static D3 operator *(D3 a, double s) => new(a.X * s, a.Y * s, a.Z * s);
+
+    public static double Dot(D3 a, D3 b) => (a.X * b.X) + (a.Y * b.Y) + (a.Z * b.Z);
+
+    public static D3 Cross(D3 a, D3 b) => new((a.Y * b.Z) - (a.Z * b.Y), (a.Z * b.X) - (a.X * b.Z), (a.X * b.Y) - (a.Y * b.X));
+
+    public double Length => Math.Sqrt(Dot(this, this));
+
+    public Vector3 ToVector3() => new((float)X, (float)Y, (float)Z);
+}
+
+/// <summary>
+/// A sphere swept along a segment, and the earliest contact found so far: every shape a cast meets is tested here, in
+/// double precision, relative to the segment's start (so the arithmetic keeps its precision wherever the frame is).
+/// Coordinates are those of the cast's frame: the landblock-local frame of its start; a shape of another landblock is
+/// passed with that landblock's offset. Polygons and triangles are two-sided: met from either side.
+/// </summary>
+/// <remarks>
+/// A contact is the first fraction t in 0..1 at which the sphere touches the shape's closed set: the face (a plane
+/// crossing at the radius, its touch point inside), an edge (a capsule's side) or a corner (a sphere), each in closed
+/// form; a cylinder's side, caps and (for a sphere) its rims. A sphere that starts overlapping a shape and moves
+/// towards it is stopped at 0; moving away or along, it is free of it. A contact at the same fraction as the one kept
+/// does not replace it, so the first shape tested of those met at once is named.
+/// </remarks>
+internal struct SweptSphere
+{
+    /// <summary>How far outside a polygon's edges (metres) its face still counts: shared edges of two polygons leave no gap.</summary>
+    private const double InsideTolerance = 1e-6;
+
+    public SweptSphere(D3 start, D3 move, double radius)
+    {
+        (Start, Move, Radius, T) = (start, move, radius, double.PositiveInfinity);
+        MoveSquared = D3.Dot(move, move);
+    }
+
+    public D3 Start { get; }
+
+    public D3 Move { get; }
+
+    public double Radius { get; }
+
+    public double MoveSquared { get; }
+
+    /// <summary>The earliest contact's fraction; +∞ for none.</summary>
+    public double T { get; private set; }
+
+    /// <summary>The earliest contact's unit normal, pointing at the sphere.</summary>
+    public D3 Normal { get; private set; }
+
+    public SurfaceKind Kind { get; private set; }
+
+    public uint Id { get; private set; }
+
+    /// <summary>Whether a contact has been found.</summary>
+    public readonly bool Found => T <= 1.0;
+
+    /// <summary>The centre at fraction t, in the cast's frame.</summary>
+    public readonly D3 At(double t) => Start + (Move * t);
+
+    /// <summary>Ends the cast at <paramref name="t"/> when nothing was met before it (a portal to a cell not loaded, land not loaded).</summary>
+    public void Stop(double t, D3 normal, SurfaceKind kind, uint id) => Keep(t, normal, kind, id);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void Keep(double t, D3 normal, SurfaceKind kind, uint id)
+    {
+        if (t < T && t <= 1.0)
+        {
+            (T, Normal, Kind, Id) = (Math.Max(t, 0.0), normal, kind, id);
+        }
+    }
+
+    /// <summary>
+    /// The polygon (vertices relative to <see cref="Start"/>, convex, in winding order), as <paramref name="kind"/>
+    /// <paramref name="id"/>; <paramref name="kindFacingDown"/> names it when its normal points down (a ceiling).
+    /// </summary>
+    public void Polygon(ReadOnlySpan<D3> v, SurfaceKind kind, uint id, SurfaceKind kindFacingDown)
+    {
+        // Newell normal, through the vertices' mean.
+        double nx = 0, ny = 0, nz = 0, cx = 0, cy = 0, cz = 0;
+        for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
+        {
+            nx += (v[j].Y - v[i].Y) * (v[j].Z + v[i].Z);
+            ny += (v[j].Z - v[i].Z) * (v[j].X + v[i].X);
+            nz += (v[j].X - v[i].X) * (v[j].Y + v[i].Y);
+            (cx, cy, cz) = (cx + v[i].X, cy + v[i].Y, cz + v[i].Z);
+        }
+
+        double length = Math.Sqrt((nx * nx) + (ny * ny) + (nz * nz));
+        if (!(length > 1e-12))
+        {
+            return; // no area
+        }
+
+        var n = new D3(nx / length, ny / length, nz / length);
+        SurfaceKind named = n.Z <= -PhysicsConstants.FloorZ ? kindFacingDown : kind;
+        var c = new D3(cx / v.Length, cy / v.Length, cz / v.Length);
+        double s0 = -D3.Dot(n, c); // the start's signed distance from the plane
+        double rate = D3.Dot(n, Move);
+        double side = s0 > 0 || (s0 == 0 && rate < 0) ? 1.0 : -1.0;
+        if (side * rate < 0)
+        {
+            // Approaching the plane: the face is met when the centre is a radius from it.
+            double t = Math.Max((Math.Abs(s0) - Radius) / (-side * rate), 0.0);
+            if (t < T && t <= 1.0)
+            {
+                D3 touch = (Move * t) - (n * (side * Math.Min(Radius, Math.Abs(s0 + (rate * t)))));
+                if (Inside(v, n, touch))
+                {
+                    Keep(t, n * side, named, id);
+                    return; // the face is the first of this polygon met
+                }
+            }
+        }
+
+        if (Radius > 0)
+        {
+            for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
+            {
+                Edge(v[j], v[i], named, id);
+                Corner(v[i], named, id);
+            }
+        }
+    }
+
+    /// <summary>Whether <paramref name="p"/>, on the plane of the convex polygon <paramref name="v"/> (normal <paramref name="n"/>), is inside it or within <see cref="InsideTolerance"/> of its edges.</summary>
+    private static bool Inside(ReadOnlySpan<D3> v, D3 n, D3 p)
+    {
+        for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
+        {
+            D3 e = v[i] - v[j];
+            D3 inward = D3.Cross(n, e);
+            double el = e.Length;
+            if (el > 0 && D3.Dot(p - v[j], inward) < -InsideTolerance * el)
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>The segment a–b (relative to the start) as a capsule of the sphere's radius.</summary>
+    private void Edge(D3 a, D3 b, SurfaceKind kind, uint id)
+    {
+        D3 e = b - a, m = -a;
+        double ee = D3.Dot(e, e), ed = D3.Dot(e, Move), em = D3.Dot(e, m);
+        if (!(ee > 0))
+        {
+            return;
+        }
+
+        double A = (ee * MoveSquared) - (ed * ed);
+        double B = (ee * D3.Dot(m, Move)) - (ed * em);
+        double C = (ee * (D3.Dot(m, m) - (Radius * Radius))) - (em * em);
+        double t;
+        if (C < 0)
+        {
+            // Already within the radius of the edge's line.
+            double s0 = em / ee;
+            if (s0 < 0 || s0 > 1 || !(B < 0))
+            {
+                return;
+            }
+
+            t = 0;
+        }
+        else
+        {
+            if (!(A > 1e-12 * ee * MoveSquared) || !(B < 0))
+            {
+                return; // along the edge (its ends answer) or moving away
+            }
+
+            double disc = (B * B) - (A * C);
+            if (disc < 0)
+            {
+                return;
+            }
+
+            t = (-B - Math.Sqrt(disc)) / A;
+            if (!(t < T) || t > 1.0)
+            {
+                return;
+            }
+        }
+
+        D3 centre = Move * t;
+        double s = (em + (t * ed)) / ee;
+        if (s < 0 || s > 1)
+        {
+            return;
+        }
+
+        Keep(t, Towards(centre - (a + (e * s))), kind, id);
+    }
+
+    /// <summary>The point <paramref name="p"/> (relative to the start) as a sphere of the cast's radius.</summary>
+    private void Corner(D3 p, SurfaceKind kind, uint id)
+    {
+        D3 m = -p;
+        double b = D3.Dot(m, Move), c = D3.Dot(m, m) - (Radius * Radius);
+        if (!(b < 0))
+        {
+            return; // moving away or along
+        }
+
+        double t = 0;
+        if (c >= 0)
+        {
+            double disc = (b * b) - (MoveSquared * c);
+            if (disc < 0)
+            {
+                return;
+            }
+
+            t = (-b - Math.Sqrt(disc)) / MoveSquared;
+        }
+
+        if (t < T && t <= 1.0)
+        {
+            Keep(t, Towards((Move * t) - p), kind, id);
+        }
+    }
+
+    /// <summary>
+    /// An upright cylinder (axis <paramref name="axisX"/>, <paramref name="axisY"/> relative to the start; radius
+    /// <paramref name="radius"/>; from <paramref name="z0"/> to <paramref name="z1"/> relative to the start).
+    /// </summary>
+    public void Cylinder(double axisX, double axisY, double radius, double z0, double z1, SurfaceKind kind, uint id)
+    {
+        double dx = Move.X, dy = Move.Y, dz = Move.Z;
+        double a = (dx * dx) + (dy * dy);
+
+        // The side: the centre's horizontal distance from the axis reaches radius + R while its Z is in z0..z1.
+        double reach = radius + Radius;
+        double b = -((dx * axisX) + (dy * axisY));
+        double c = (axisX * axisX) + (axisY * axisY) - (reach * reach);
+        if (b < 0)
+        {
+            double t = -1;
+            if (c < 0)
+            {
+                t = 0; // within reach of the axis already, moving towards it
+            }
+            else if (a > 0)
+            {
+                double disc = (b * b) - (a * c);
+                t = disc >= 0 ? (-b - Math.Sqrt(disc)) / a : -1;
+            }
+
+            double z = dz * t;
+            if (t >= 0 && t < T && t <= 1.0 && z >= z0 && z <= z1)
+            {
+                D3 centre = Move * t;
+                Keep(t, Towards(new D3(centre.X - axisX, centre.Y - axisY, 0)), kind, id);
+            }
+        }
+
+        // The caps: the centre a radius above the top (or below the bottom) within the cylinder's radius.
+        Cap(axisX, axisY, radius, z1 + Radius, dz < 0 && z1 + Radius <= 0, 1.0, kind, id);
+        Cap(axisX, axisY, radius, z0 - Radius, dz > 0 && z0 - Radius >= 0, -1.0, kind, id);
+
+        if (Radius > 0)
+        {
+            Rim(axisX, axisY, radius, z1, 1.0, kind, id);
+            Rim(axisX, axisY, radius, z0, -1.0, kind, id);
+        }
+    }
+
+    private void Cap(double axisX, double axisY, double radius, double planeZ, bool approaching, double up, SurfaceKind kind, uint id)
+    {
+        if (!approaching)
+        {
+            return;
+        }
+
+        double t = planeZ / Move.Z;
+        if (!(t < T) || t > 1.0)
+        {
+            return;
+        }
+
+        double hx = (Move.X * t) - axisX, hy = (Move.Y * t) - axisY;
+        if ((hx * hx) + (hy * hy) <= radius * radius)
+        {
+            Keep(t, new D3(0, 0, up), kind, id);
+        }
+    }
+
+    /// <summary>
+    /// The rim circle at <paramref name="z"/> (the top's, <paramref name="up"/> 1, or the bottom's, −1): where the sphere
+    /// first comes within its radius of the circle while beyond the cap and outside the side (the side and caps answer
+    /// elsewhere). Found by advancing the sphere by its distance to the circle (a distance never overshoots), at most
+    /// 64 times; a graze that has not closed to 1e-9 m by then is a miss.
+    /// </summary>
+    private void Rim(double axisX, double axisY, double radius, double z, double up, SurfaceKind kind, uint id)
+    {
+        double length = Math.Sqrt(MoveSquared);
+        if (!(length > 0))
+        {
+            return;
+        }
+
+        double t = 0;
+        double limit = Math.Min(T, 1.0);
+        for (int i = 0; i < 64 && t <= limit; i++)
+        {
+            D3 centre = Move * t;
+            double hx = centre.X - axisX, hy = centre.Y - axisY, rho = Math.Sqrt((hx * hx) + (hy * hy));
+            double gap = Math.Sqrt(((rho - radius) * (rho - radius)) + ((centre.Z - z) * (centre.Z - z))) - Radius;
+            if (gap <= 1e-9)
+            {
+                if (i == 0 && gap < -1e-9)
+                {
+                    return; // overlapping at the start: the side and caps decide
+                }
+
+                if ((centre.Z - z) * up > 0 && rho > radius)
+                {
+                    double k = rho > 0 ? radius / rho : 0;
+                    Keep(t, Towards(new D3(hx - (hx * k), hy - (hy * k), centre.Z - z)), kind, id);
+                }
+
+                return;
+            }
+
+            t += gap / length;
+        }
+    }
+
+    /// <summary>
+    /// The ray (radius 0) or the lowest point (radius R) of the sphere against the bilinear patch of one terrain cell
+    /// (south-west corner at x0, y0 relative to the start, side <c>size</c> metres; corner heights relative to the
+    /// start), met from above, as terrain cell <c>id</c>.
+    /// </summary>
+    public void BilinearCell(double x0, double y0, double size, double hSW, double hSE, double hNW, double hNE, uint id)
+    {
+        // Along the ray: u = (tDx − x0)/size, v = (tDy − y0)/size; the lowest point's Z − h(u, v) is a quadratic in t.
+        double u0 = -x0 / size, du = Move.X / size, v0 = -y0 / size, dv = Move.Y / size;
+        double a = hSW, b = hSE - hSW, c = hNW - hSW, d = hNE - hNW - hSE + hSW; // h = a + b·u + c·v + d·u·v
+        double k0 = -Radius - (a + (b * u0) + (c * v0) + (d * u0 * v0));
+        double k1 = Move.Z - ((b * du) + (c * dv) + (d * ((u0 * dv) + (v0 * du))));
+        double k2 = -(d * du * dv);
+
+        // Earliest t in the cell's span of the ray where k0 + k1 t + k2 t² falls to 0 from above.
+        (double tIn, double tOut) = Span(u0, du, v0, dv);
+        if (!(tIn <= tOut) || !(k0 + (k1 * tIn) + (k2 * tIn * tIn) >= 0))
+        {
+            return;
+        }
+
+        double best = double.PositiveInfinity;
+        if (Math.Abs(k2) < 1e-15)
+        {
+            if (k1 < 0)
+            {
+                best = -k0 / k1;
+            }
+        }
+        else
+        {
+            double disc = (k1 * k1) - (4 * k2 * k0);
+            if (disc >= 0)
+            {
+                double sq = Math.Sqrt(disc);
+                double q = -0.5 * (k1 + (k1 >= 0 ? sq : -sq));
+                double r1 = q / k2, r2 = q != 0 ? k0 / q : double.PositiveInfinity;
+                foreach (double r in (ReadOnlySpan<double>)[r1, r2])
+                {
+                    if (r >= tIn && r < best)
+                    {
+                        best = r;
+                    }
+                }
+            }
+        }
+
+        if (best < tIn || best > tOut || !(best < T) || best > 1.0)
+        {
+            return;
+        }
+
+        double u = u0 + (du * best), v = v0 + (dv * best);
+        double gx = (b + (d * v)) / size, gy = (c + (d * u)) / size;
+        double n = 1.0 / Math.Sqrt(1.0 + (gx * gx) + (gy * gy));
+        Keep(best, new D3(-gx * n, -gy * n, n), SurfaceKind.Terrain, id);
+    }
+
+    /// <summary>The fractions of the ray within the unit square u, v ∈ 0..1 (empty: in &gt; out).</summary>
+    private static (double In, double Out) Span(double u0, double du, double v0, double dv)
+    {
+        double tIn = 0, tOut = 1;
+        Clip(u0, du, ref tIn, ref tOut);
+        Clip(v0, dv, ref tIn, ref tOut);
+        return (tIn, tOut);
+
+        static void Clip(double s0, double ds, ref double tIn, ref double tOut)
+        {
+            if (ds == 0)
+            {
+                if (s0 < 0 || s0 > 1)
+                {
+                    (tIn, tOut) = (1, 0);
+                }
+
+                return;
+            }
+
+            double ta = -s0 / ds, tb = (1 - s0) / ds;
+            (tIn, tOut) = (Math.Max(tIn, Math.Min(ta, tb)), Math.Min(tOut, Math.Max(ta, tb)));
+        }
+    }
+
+    /// <summary>A contact's normal from the nearest point of the shape to the centre; against the move when they coincide.</summary>
+    private readonly D3 Towards(D3 fromShape)
+    {
+        double l = fromShape.Length;
+        return l > 0 ? fromShape * (1.0 / l) : -Move * (1.0 / Math.Sqrt(MoveSquared));
+    }
+}

@@ -1,0 +1,546 @@
+using System.Numerics;
+using System.Runtime.CompilerServices;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// A cast through the world (<see cref="PhysicsEngine.Cast"/>): the sphere's centre followed piece by piece, in a cell
+/// or outdoors, and in each piece every shape the sphere can reach there tested (<see cref="SweptSphere"/>), in the
+/// landblock-local frame of the start.
+/// </summary>
+/// <remarks>
+/// <para>
+/// In a cell: the shapes of the cell, of every cell reached from it through portals whose bounds meet the rest of the
+/// path (grown by the radius), and of the objects standing in them; near a portal to the outdoors, also the outdoor
+/// objects and the walls of the building's cells within the radius of that portal (a shell's door frame); the movers
+/// near. The centre leaves the cell through the first portal its segment passes out through: on into the neighbour,
+/// or outdoors; a portal to a cell that is not loaded stops it as a wall.
+/// </para>
+/// <para>
+/// Outdoors: the centre's path is walked 24 m terrain cell by cell (across seams: the cell's landblock, in the
+/// start's frame); in each the terrain, outdoor objects, the walls of buildings' cells met from outdoors and the
+/// movers within the radius of that stretch of the path are tested, and the doorways of the cells over it: a centre
+/// passing in through one goes on in that cell. The walk ends at the first stretch that holds the earliest contact
+/// found, so its cost grows with the cells crossed, not the landblock's size. A stretch in a landblock that is not
+/// loaded (or off the world) stops the cast where it begins.
+/// </para>
+/// </remarks>
+internal static class WorldCast
+{
+    private const float Size = PhysicsConstants.LandblockSize;
+    private const double Column = PhysicsConstants.CellSize;
+
+    /// <summary>Where the centre is while the cast walks: the landblock, the cell (−1 outdoors) and the fraction it got there.</summary>
+    private struct Piece
+    {
+        public LandblockEntry Entry;
+        public int Cell;
+        public double From;
+        public bool Done;
+    }
+
+    public static CastHit Run(in WorldFrame frame, ref Neighbourhood lands, in Place start, Vector3 from, Vector3 to, in CastOptions options)
+    {
+        var origin = new D3(start.Local.X, start.Local.Y, from.Z);
+        var move = new D3((double)to.X - from.X, (double)to.Y - from.Y, (double)to.Z - from.Z);
+        var ray = new SweptSphere(origin, move, options.Radius);
+        var piece = new Piece { Entry = start.Entry, Cell = start.CellIndex };
+        var cast = new Walk(start.X, start.Y, options);
+        for (int visit = 0; visit < PhysicsConstants.MaxCellVisits && !piece.Done; visit++)
+        {
+            if (piece.Cell >= 0)
+            {
+                cast.Indoors(ref ray, ref lands, ref piece);
+            }
+            else
+            {
+                cast.Outdoors(ref ray, ref lands, ref piece);
+            }
+        }
+
+        double t = Math.Min(ray.T, 1.0);
+        D3 centre = ray.At(t);
+        (int lx, int ly, Vector2 local) = cast.Landblock(centre);
+        uint cellId = piece.Cell >= 0 ? piece.Entry.Cells[piece.Cell].CellId : WorldFrame.OutdoorCellId(lx, ly, local);
+        if (!ray.Found)
+        {
+            return new CastHit(false, 1f, to, to, Vector3.Zero, SurfaceKind.None, 0, cellId);
+        }
+
+        Vector3 position = frame.ToWorld(start.X, start.Y, new Vector2((float)centre.X, (float)centre.Y), (float)centre.Z);
+        D3 touch = centre - (ray.Normal * ray.Radius);
+        Vector3 point = frame.ToWorld(start.X, start.Y, new Vector2((float)touch.X, (float)touch.Y), (float)touch.Z);
+        return new CastHit(true, (float)t, position, point, ray.Normal.ToVector3(), ray.Kind, ray.Id, cellId);
+    }
+
+    /// <summary>The walk's fixed state: the start's landblock (the cast's frame) and the options.</summary>
+    private readonly struct Walk(int x0, int y0, CastOptions options)
+    {
+        private readonly int _x0 = x0, _y0 = y0;
+        private readonly CastOptions _options = options;
+
+        /// <summary>The landblock a point of the cast's frame is in, and its local XY there.</summary>
+        public (int X, int Y, Vector2 Local) Landblock(D3 p)
+        {
+            int dx = (int)Math.Floor(p.X / Size), dy = (int)Math.Floor(p.Y / Size);
+            return (_x0 + dx, _y0 + dy, new Vector2((float)(p.X - (dx * (double)Size)), (float)(p.Y - (dy * (double)Size))));
+        }
+
+        /// <summary>The offset of a landblock's frame in the cast's: a point of its frame plus this is in the cast's.</summary>
+        private D3 OffsetOf(LandblockEntry entry) => new((entry.X - _x0) * (double)Size, (entry.Y - _y0) * (double)Size, 0);
+
+        /// <summary>The piece in a cell: its shapes and its neighbours' tested, then the centre's way out of it.</summary>
+        public void Indoors(ref SweptSphere ray, ref Neighbourhood lands, ref Piece piece)
+        {
+            LandblockEntry entry = piece.Entry;
+            D3 offset = OffsetOf(entry);
+            Box box = Box.Of(in ray, piece.From, 1.0, offset);
+
+            // The cells whose portals' bounds the rest of the path meets, breadth first from the centre's.
+            Span<int> cells = stackalloc int[PhysicsConstants.MaxCellVisits];
+            int count = 1;
+            cells[0] = piece.Cell;
+            bool outdoors = false;
+            Box doors = Box.Empty;
+            for (int i = 0; i < count; i++)
+            {
+                CellSurface cell = entry.Cells[cells[i]];
+                ReadOnlySpan<PortalShape> portals = cell.PortalShapes;
+                int[] targets = entry.PortalTargets[cells[i]];
+                for (int k = 0; k < portals.Length; k++)
+                {
+                    PortalShape p = portals[k];
+                    if (!box.Meets(p.BoundsMin, p.BoundsMax, p.ZMin, p.ZMax))
+                    {
+                        continue;
+                    }
+
+                    if (targets[k] == LandblockEntry.OutdoorTarget)
+                    {
+                        outdoors = true;
+                        doors = doors.With(new Box(p.BoundsMin, p.BoundsMax, p.ZMin, p.ZMax));
+                    }
+                    else if (targets[k] >= 0 && count < cells.Length && !cells[..count].Contains(targets[k]))
+                    {
+                        cells[count++] = targets[k];
+                    }
+                }
+            }
+
+            for (int i = 0; i < count; i++)
+            {
+                Cell(ref ray, entry.Cells[cells[i]], offset, in box);
+            }
+
+            if (outdoors)
+            {
+                Box near = doors.Grown((float)ray.Radius + PhysicsConstants.EdgeTolerance).Within(in box);
+                if (!near.IsEmpty)
+                {
+                    Things(ref ray, ref lands, entry, offset, in near, cells: true);
+                }
+            }
+
+            Movers(ref ray, ref lands, entry, offset, in box);
+
+            // The centre's way out: the first portal of its cell it passes out through.
+            CellSurface here = entry.Cells[piece.Cell];
+            ReadOnlySpan<PortalShape> own = here.PortalShapes;
+            double exit = double.PositiveInfinity;
+            int through = -1;
+            for (int k = 0; k < own.Length; k++)
+            {
+                double t = Crossing(in ray, own[k], offset, piece.From, outward: true);
+                if (t < exit)
+                {
+                    (exit, through) = (t, k);
+                }
+            }
+
+            if (through < 0 || ray.T <= exit)
+            {
+                piece.Done = true;
+                return;
+            }
+
+            int target = entry.PortalTargets[piece.Cell][through];
+            if (target == LandblockEntry.MissingCell)
+            {
+                Vector3 n = -own[through].OutNormal;
+                ray.Stop(exit, new D3(n.X, n.Y, n.Z), SurfaceKind.CellWall, here.CellId);
+                piece.Done = true;
+                return;
+            }
+
+            (piece.Cell, piece.From) = (target, exit);
+        }
+
+        /// <summary>The piece outdoors: the path walked terrain cell by terrain cell until a stretch holds the earliest contact, or the centre passes in through a doorway.</summary>
+        public void Outdoors(ref SweptSphere ray, ref Neighbourhood lands, ref Piece piece)
+        {
+            D3 p = ray.At(piece.From), d = ray.Move;
+            int cx = (int)Math.Floor(p.X / Column), cy = (int)Math.Floor(p.Y / Column);
+            int stepX = d.X > 0 ? 1 : d.X < 0 ? -1 : 0, stepY = d.Y > 0 ? 1 : d.Y < 0 ? -1 : 0;
+            double nextX = stepX == 0 ? double.PositiveInfinity : (((cx + (stepX > 0 ? 1 : 0)) * Column) - ray.Start.X) / d.X;
+            double nextY = stepY == 0 ? double.PositiveInfinity : (((cy + (stepY > 0 ? 1 : 0)) * Column) - ray.Start.Y) / d.Y;
+            double deltaX = stepX == 0 ? 0 : Column / Math.Abs(d.X), deltaY = stepY == 0 ? 0 : Column / Math.Abs(d.Y);
+            double t0 = piece.From;
+            while (true)
+            {
+                double t1 = Math.Min(Math.Min(nextX, nextY), 1.0);
+                int lx = _x0 + FloorDiv(cx, PhysicsConstants.CellsPerSide), ly = _y0 + FloorDiv(cy, PhysicsConstants.CellsPerSide);
+                if (!CellIds.IsInWorld(lx, ly) || lands.Get(lx, ly) is not LandblockEntry entry)
+                {
+                    if (t0 < ray.T)
+                    {
+                        D3 back = -d * (1.0 / Math.Max(d.Length, double.Epsilon));
+                        ray.Stop(t0, back, SurfaceKind.None, 0); // land not loaded (or off the world): the cast ends where it begins
+                    }
+
+                    piece.Done = true;
+                    return;
+                }
+
+                D3 offset = OffsetOf(entry);
+                Box box = Box.Of(in ray, t0, t1, offset);
+                Terrain(ref ray, ref lands, in box, offset);
+                Things(ref ray, ref lands, entry, offset, in box, cells: true);
+                Movers(ref ray, ref lands, entry, offset, in box);
+                double door = Doorway(in ray, entry, offset, cx - ((lx - _x0) * PhysicsConstants.CellsPerSide), cy - ((ly - _y0) * PhysicsConstants.CellsPerSide), t0, t1, out int cell);
+                if (door < ray.T && door <= t1)
+                {
+                    (piece.Entry, piece.Cell, piece.From) = (entry, cell, door);
+                    return;
+                }
+
+                if (ray.T <= t1 || t1 >= 1.0)
+                {
+                    piece.Entry = entry;
+                    piece.Done = true;
+                    return;
+                }
+
+                t0 = t1;
+                if (nextX <= nextY)
+                {
+                    (cx, nextX) = (cx + stepX, nextX + deltaX);
+                }
+                else
+                {
+                    (cy, nextY) = (cy + stepY, nextY + deltaY);
+                }
+            }
+        }
+
+        /// <summary>A cell's walls (ceilings named as such), floors and the objects standing in it, within the box.</summary>
+        private void Cell(ref SweptSphere ray, CellSurface cell, D3 offset, in Box box)
+        {
+            Walls(ref ray, cell.Walls, offset, in box, SurfaceKind.CellWall, SurfaceKind.CellCeiling, SurfaceKind.CellWall, cell.CellId);
+            Floors(ref ray, cell.Floors, offset, in box, SurfaceKind.CellFloor, cell.CellId);
+            foreach (ObjectSurface o in cell.Objects)
+            {
+                Object(ref ray, o, offset, in box);
+            }
+        }
+
+        private void Object(ref SweptSphere ray, ObjectSurface o, D3 offset, in Box box)
+        {
+            if (o.ObjectId == _options.IgnoreId && _options.IgnoreId != 0)
+            {
+                return;
+            }
+
+            Vector3 lo = o.BoundsMin, hi = o.BoundsMax;
+            if (!box.Meets(new Vector2(lo.X, lo.Y), new Vector2(hi.X, hi.Y), lo.Z, hi.Z))
+            {
+                return;
+            }
+
+            SurfaceKind wall = o.IsBuilding ? SurfaceKind.BuildingShell : SurfaceKind.ObjectWall;
+            Walls(ref ray, o.Walls, offset, in box, wall, wall, SurfaceKind.Cylinder, o.ObjectId);
+            Floors(ref ray, o.Floors, offset, in box, SurfaceKind.ObjectFloor, o.ObjectId);
+        }
+
+        /// <summary>Wall polygons and cylinders whose bounds meet the box.</summary>
+        private static void Walls(ref SweptSphere ray, CellWalls walls, D3 offset, in Box box, SurfaceKind kind, SurfaceKind facingDown, SurfaceKind round, uint id)
+        {
+            WallPolygon[] polygons = walls.Polygons;
+            WallExtent[] extents = walls.Extents;
+            Vector3[] vertices = walls.Vertices;
+            System.Runtime.Intrinsics.Vector128<float> query = WallExtent.Query(box.Lo, box.Hi);
+            Span<D3> v = stackalloc D3[PhysicsConstants.MaxWallPolygonVertices];
+            D3 rel = offset - ray.Start;
+            for (int i = 0; i < polygons.Length; i++)
+            {
+                if (!extents[i].Meets(query, box.ZLo, box.ZHi))
+                {
+                    continue;
+                }
+
+                ref readonly WallPolygon w = ref polygons[i];
+                if (w.Radius > 0f)
+                {
+                    ray.Cylinder(w.A.X + rel.X, w.A.Y + rel.Y, w.Radius, w.ZMin + rel.Z, w.ZMax + rel.Z, round, id);
+                    continue;
+                }
+
+                for (int k = 0; k < w.Count; k++)
+                {
+                    Vector3 p = vertices[w.First + k];
+                    v[k] = new D3(p.X + rel.X, p.Y + rel.Y, p.Z + rel.Z);
+                }
+
+                ray.Polygon(v[..w.Count], kind, id, facingDown);
+            }
+        }
+
+        /// <summary>Floor triangles whose bounds meet the box, each at the Z its plane gives its corners (as a mover stands on it).</summary>
+        private static void Floors(ref SweptSphere ray, ReadOnlySpan<FloorTriangle> floors, D3 offset, in Box box, SurfaceKind kind, uint id)
+        {
+            Span<D3> v = stackalloc D3[3];
+            D3 rel = offset - ray.Start;
+            foreach (ref readonly FloorTriangle f in floors)
+            {
+                if (!box.Meets(f.Min, f.Max, f.ZMin, f.ZMax))
+                {
+                    continue;
+                }
+
+                v[0] = Corner(in f, f.A, rel);
+                v[1] = Corner(in f, f.B, rel);
+                v[2] = Corner(in f, f.C, rel);
+                ray.Polygon(v, kind, id, kind);
+            }
+        }
+
+        private static D3 Corner(in FloorTriangle f, Vector2 p, D3 rel)
+        {
+            double z = f.PlaneZ + ((double)f.Gradient.X * ((double)p.X - f.PlanePoint.X)) + ((double)f.Gradient.Y * ((double)p.Y - f.PlanePoint.Y));
+            z = Math.Clamp(z, f.ZMin, f.ZMax);
+            return new D3(p.X + rel.X, p.Y + rel.Y, z + rel.Z);
+        }
+
+        /// <summary>
+        /// What stands outdoors within the box (the frame of <paramref name="entry"/>, at <paramref name="offset"/> in the
+        /// cast's): its outdoor objects and, with <paramref name="cells"/>, the walls of its cells met from outdoors; the same
+        /// of every neighbour whose things reach into the box.
+        /// </summary>
+        private void Things(ref SweptSphere ray, ref Neighbourhood lands, LandblockEntry entry, D3 offset, in Box box, bool cells)
+        {
+            Outdoor(ref ray, entry, offset, in box, cells);
+            SeamNeighbours across = Neighbourhood.Across(ref lands, entry, box.Lo, box.Hi);
+            while (across.MoveNext())
+            {
+                Vector2 o = across.Offset;
+                Box there = box.Moved(-o);
+                Outdoor(ref ray, across.Current, offset + new D3(o.X, o.Y, 0), in there, cells);
+            }
+        }
+
+        private void Outdoor(ref SweptSphere ray, LandblockEntry entry, D3 offset, in Box box, bool cells)
+        {
+            if (cells && entry.OutdoorCellWalls is BoxGrid walls)
+            {
+                for (BoxGrid.Cursor near = walls.Near(box.Lo, box.Hi); near.MoveNext();)
+                {
+                    CellSurface cell = entry.Cells[near.Current];
+                    Walls(ref ray, cell.Walls, offset, in box, SurfaceKind.CellWall, SurfaceKind.CellCeiling, SurfaceKind.CellWall, cell.CellId);
+                }
+            }
+
+            ObjectSurface[] objects = entry.OutdoorObjects;
+            for (BoxGrid.Cursor near = entry.Objects.Near(box.Lo, box.Hi); near.MoveNext();)
+            {
+                Object(ref ray, objects[near.Current], offset, in box);
+            }
+        }
+
+        /// <summary>The terrain triangles (or bilinear cells) under the box (the frame at <paramref name="offset"/>), in whichever landblocks they are.</summary>
+        private void Terrain(ref SweptSphere ray, ref Neighbourhood lands, in Box box, D3 offset)
+        {
+            int per = PhysicsConstants.CellsPerSide;
+            int c0 = (int)Math.Floor((box.Lo.X + offset.X) / Column), c1 = (int)Math.Floor((box.Hi.X + offset.X) / Column);
+            int r0 = (int)Math.Floor((box.Lo.Y + offset.Y) / Column), r1 = (int)Math.Floor((box.Hi.Y + offset.Y) / Column);
+            Span<D3> v = stackalloc D3[3];
+            for (int c = c0; c <= c1; c++)
+            {
+                for (int r = r0; r <= r1; r++)
+                {
+                    int lx = _x0 + FloorDiv(c, per), ly = _y0 + FloorDiv(r, per);
+                    if (!CellIds.IsInWorld(lx, ly) || lands.Get(lx, ly) is not LandblockEntry entry)
+                    {
+                        continue;
+                    }
+
+                    int cx = c - ((lx - _x0) * per), cy = r - ((ly - _y0) * per);
+                    TerrainSurface terrain = entry.Terrain;
+                    terrain.Corners(cx, cy, out double sw, out double nw, out double se, out double ne);
+                    if (Math.Max(Math.Max(sw, nw), Math.Max(se, ne)) < box.ZLo || Math.Min(Math.Min(sw, nw), Math.Min(se, ne)) > box.ZHi)
+                    {
+                        continue; // the path's stretch is wholly above or below this cell's ground
+                    }
+
+                    uint id = CellIds.Prefix(lx, ly) | (uint)((cx * per) + cy + 1);
+                    double x = (c * Column) - ray.Start.X, y = (r * Column) - ray.Start.Y, z = -ray.Start.Z;
+                    (sw, nw, se, ne) = (sw + z, nw + z, se + z, ne + z);
+                    if (terrain.LandblockId is null)
+                    {
+                        ray.BilinearCell(x, y, Column, sw, se, nw, ne, id);
+                        continue;
+                    }
+
+                    D3 pSW = new(x, y, sw), pSE = new(x + Column, y, se), pNW = new(x, y + Column, nw), pNE = new(x + Column, y + Column, ne);
+                    if (terrain.IsSplitSwToNe(cx, cy))
+                    {
+                        Triangle(ref ray, v, pSW, pSE, pNE, id);
+                        Triangle(ref ray, v, pSW, pNE, pNW, id);
+                    }
+                    else
+                    {
+                        Triangle(ref ray, v, pSW, pSE, pNW, id);
+                        Triangle(ref ray, v, pNE, pNW, pSE, id);
+                    }
+                }
+            }
+        }
+
+        private static void Triangle(ref SweptSphere ray, Span<D3> v, D3 a, D3 b, D3 c, uint id)
+        {
+            (v[0], v[1], v[2]) = (a, b, c);
+            ray.Polygon(v, SurfaceKind.Terrain, id, SurfaceKind.Terrain);
+        }
+
+        /// <summary>The movers within the box that the cast's filters do not pass (itself is never listed).</summary>
+        private void Movers(ref SweptSphere ray, ref Neighbourhood lands, LandblockEntry entry, D3 offset, in Box box)
+        {
+            if (lands.Movers is not MoverFrame movers)
+            {
+                return;
+            }
+
+            Span<D3> v = stackalloc D3[PhysicsConstants.MaxWallPolygonVertices];
+            for (Neighbourhood.MoverCursor near = lands.MoversNear(entry.X, entry.Y, new WallBox(box.Lo, box.Hi, box.ZLo, box.ZHi)); near.MoveNext();)
+            {
+                int j = near.Current;
+                ref readonly MoverState state = ref movers.States[j];
+                if (((_options.Filter & CastFilter.IgnoreCreatures) != 0 && state.IsCreature)
+                    || ((_options.Filter & CastFilter.SolidOnly) != 0 && (state.Physics & PhysicsStateFlags.Ethereal) != 0))
+                {
+                    continue;
+                }
+
+                D3 at = offset + new D3(near.Offset.X, near.Offset.Y, 0);
+                Walls(ref ray, movers.Walls[j], at, box.Moved(-near.Offset), SurfaceKind.Mover, SurfaceKind.Mover, SurfaceKind.Mover, movers.Ids[j]);
+            }
+        }
+
+        /// <summary>The earliest fraction in t0..t1 at which the centre passes in through a doorway of a cell over terrain cell (cx, cy) of <paramref name="entry"/>; +∞ for none.</summary>
+        private static double Doorway(in SweptSphere ray, LandblockEntry entry, D3 offset, int cx, int cy, double t0, double t1, out int cell)
+        {
+            cell = -1;
+            double best = double.PositiveInfinity;
+            if ((uint)cx >= PhysicsConstants.CellsPerSide || (uint)cy >= PhysicsConstants.CellsPerSide)
+            {
+                return best;
+            }
+
+            foreach (int c in entry.EntryBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
+            {
+                ReadOnlySpan<PortalShape> portals = entry.Cells[c].PortalShapes;
+                int[] targets = entry.PortalTargets[c];
+                for (int k = 0; k < portals.Length; k++)
+                {
+                    if (targets[k] != LandblockEntry.OutdoorTarget)
+                    {
+                        continue;
+                    }
+
+                    double t = Crossing(in ray, portals[k], offset, t0, outward: false);
+                    if (t <= t1 && t < best)
+                    {
+                        (best, cell) = (t, c);
+                    }
+                }
+            }
+
+            return best;
+        }
+    }
+
+    /// <summary>
+    /// The fraction (≥ <paramref name="from"/>) at which the centre passes through the portal's opening, out of its cell
+    /// (<paramref name="outward"/>) or into it; +∞ when it does not before the end. A centre on the plane within the
+    /// edge tolerance, moving through, passes at once.
+    /// </summary>
+    private static double Crossing(in SweptSphere ray, PortalShape portal, D3 offset, double from, bool outward)
+    {
+        Vector3 n = portal.OutNormal;
+        if (portal.Kind == PortalKind.Degenerate)
+        {
+            return double.PositiveInfinity;
+        }
+
+        var normal = new D3(n.X, n.Y, n.Z);
+        D3 o = offset + new D3(portal.Origin.X, portal.Origin.Y, portal.Origin.Z);
+        double d0 = D3.Dot(normal, ray.At(from) - o), rate = D3.Dot(normal, ray.Move);
+        double sign = outward ? 1 : -1;
+        (d0, rate) = (d0 * sign, rate * sign);
+        if (!(rate > 0) || d0 > PhysicsConstants.EdgeTolerance)
+        {
+            return double.PositiveInfinity; // moving away from it, along it, or already beyond
+        }
+
+        double t = from + Math.Max(-d0 / rate, 0.0);
+        if (t > 1.0)
+        {
+            return double.PositiveInfinity;
+        }
+
+        D3 at = ray.At(t) - o;
+        const double tol = PhysicsConstants.EdgeTolerance;
+        if (portal.Kind == PortalKind.Horizontal)
+        {
+            return portal.ContainsXY((float)(at.X + o.X - offset.X), (float)(at.Y + o.Y - offset.Y)) ? t : double.PositiveInfinity;
+        }
+
+        double along = (portal.Tangent.X * at.X) + (portal.Tangent.Y * at.Y);
+        double z = at.Z + o.Z;
+        return along >= portal.TMin - tol && along <= portal.TMax + tol && z >= portal.ZMin - tol && z <= portal.ZMax + tol ? t : double.PositiveInfinity;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static int FloorDiv(int a, int b) => a >= 0 ? a / b : -((-a + b - 1) / b);
+
+    /// <summary>A box of one landblock's frame, metres: seen from above and in height (empty when lo &gt; hi).</summary>
+    private readonly record struct Box(Vector2 Lo, Vector2 Hi, float ZLo, float ZHi)
+    {
+        public static Box Empty => new(new Vector2(float.MaxValue), new Vector2(float.MinValue), float.MaxValue, float.MinValue);
+
+        public bool IsEmpty => !(Lo.X <= Hi.X && Lo.Y <= Hi.Y && ZLo <= ZHi);
+
+        /// <summary>The sphere's path from t0 to t1, in the frame at <paramref name="offset"/>, grown by its radius and a margin for rounding to floats.</summary>
+        public static Box Of(in SweptSphere ray, double t0, double t1, D3 offset)
+        {
+            D3 a = ray.At(t0) - offset, b = ray.At(t1) - offset;
+            double grow = ray.Radius + 1e-3;
+            return new Box(
+                new Vector2((float)(Math.Min(a.X, b.X) - grow), (float)(Math.Min(a.Y, b.Y) - grow)),
+                new Vector2((float)(Math.Max(a.X, b.X) + grow), (float)(Math.Max(a.Y, b.Y) + grow)),
+                (float)(Math.Min(a.Z, b.Z) - grow),
+                (float)(Math.Max(a.Z, b.Z) + grow));
+        }
+
+        public bool Meets(Vector2 lo, Vector2 hi, float zLo, float zHi) =>
+            lo.X <= Hi.X && hi.X >= Lo.X && lo.Y <= Hi.Y && hi.Y >= Lo.Y && zLo <= ZHi && zHi >= ZLo;
+
+        public Box With(Box other) =>
+            new(Vector2.Min(Lo, other.Lo), Vector2.Max(Hi, other.Hi), MathF.Min(ZLo, other.ZLo), MathF.Max(ZHi, other.ZHi));
+
+        public Box Grown(float by) => new(Lo - new Vector2(by), Hi + new Vector2(by), ZLo - by, ZHi + by);
+
+        public Box Within(in Box other) =>
+            new(Vector2.Max(Lo, other.Lo), Vector2.Min(Hi, other.Hi), MathF.Max(ZLo, other.ZLo), MathF.Min(ZHi, other.ZHi));
+
+        public Box Moved(Vector2 by) => new(Lo + by, Hi + by, ZLo, ZHi);
+    }
+}
