@@ -1,0 +1,241 @@
+using System.Numerics;
+using AcDream.App.Fixtures;
+using AcDream.Core.Dat;
+using AcDream.Core.Physics;
+using static AcDream.Testing.CastReference;
+
+namespace AcDream.Core.Tests.Casting;
+
+/// <summary>
+/// An engine and the same world as <see cref="CastReference"/> shapes, in the landblock-local metres of
+/// <see cref="Landblock"/>; and the comparison of a cast with the reference.
+/// </summary>
+/// <remarks>
+/// A cast is given world floats; the reference is given exactly those floats less the landblock's world origin
+/// (<see cref="Local(Vector3)"/>, exact in double), so both sweep the same segment. The engine's world answers are
+/// floats: in the global frame they are rounded to 2–4 mm (Holtburg's world X is 32,448 m, its Y 34,560 m), so there
+/// positions are compared within 1e-4 m plus half the float spacing of the world coordinate, and the travel to the
+/// contact (<see cref="CastHit.Fraction"/> × the segment's length) within 1e-4 m, which rounding does not touch.
+/// </remarks>
+internal sealed class CastScene(PhysicsEngine engine, string frame, uint landblock, IEnumerable<Shape> shapes)
+{
+    /// <summary>The largest difference from the reference a contact may have, metres.</summary>
+    public const double Tolerance = 1e-4;
+
+    /// <summary>Unit normals agree within this (a sphere's normal is its centre less its contact point over its radius).</summary>
+    public const double NormalTolerance = 1e-3;
+
+    private CastReference? _reference;
+
+    public PhysicsEngine Engine { get; } = engine;
+
+    public string Frame { get; } = frame;
+
+    public uint Landblock { get; } = landblock;
+
+    public List<Shape> Shapes { get; } = [.. shapes];
+
+    public CastReference Reference => _reference ??= new CastReference(Shapes);
+
+    public Vector3 Origin => Engine.GetLandblockOrigin(Landblock);
+
+    public bool Global => Frame == "global";
+
+    /// <summary>A reference-frame point in world floats (rounded once).</summary>
+    public Vector3 World(V3 local)
+    {
+        Vector3 o = Origin;
+        return new Vector3((float)(o.X + local.X), (float)(o.Y + local.Y), (float)(o.Z + local.Z));
+    }
+
+    public Vector3 World(double x, double y, double z) => World(new V3(x, y, z));
+
+    /// <summary>A world float point in the reference frame, exactly.</summary>
+    public V3 Local(Vector3 world)
+    {
+        Vector3 o = Origin;
+        return new V3((double)world.X - o.X, (double)world.Y - o.Y, (double)world.Z - o.Z);
+    }
+
+    /// <summary>The reference's contact for the segment the engine is given.</summary>
+    public Hit? Expected(Vector3 from, Vector3 to, float radius) => Reference.Cast(Local(from), Local(to), radius);
+
+    /// <summary>
+    /// Casts and checks the answer against the reference: no contact, or the same contact (travel, centre, point within
+    /// <see cref="Tolerance"/>; normal within <see cref="NormalTolerance"/> where one is defined; a shape met there named).
+    /// Every value is in the failure message; the deviations go to <paramref name="worst"/>.
+    /// </summary>
+    public CastHit Check(Vector3 from, uint cellId, Vector3 to, float radius, Deviations worst, string what, CastFilter filter = CastFilter.None, uint ignoreId = 0)
+    {
+        CastHit hit = Engine.Cast(from, cellId, to, new CastOptions(radius, filter, ignoreId));
+        Hit? expected = Expected(from, to, radius);
+        Agree(hit, expected, from, to, radius, worst, what);
+        return hit;
+    }
+
+    /// <summary>Checks <paramref name="hit"/> against <paramref name="expected"/> (see <see cref="Check"/>).</summary>
+    public void Agree(CastHit hit, Hit? expected, Vector3 from, Vector3 to, float radius, Deviations worst, string what)
+    {
+        V3 a = Local(from), b = Local(to);
+        double length = (b - a).Length;
+        string says = $"{what} [{Frame}]: from {a} to {b} (world {from} → {to}), radius {radius}; engine {hit} (centre {Local(hit.Position)}, point {Local(hit.Point)}); reference {expected?.ToString() ?? "no contact"}";
+        if (expected is null)
+        {
+            hit.Hit.Should().BeFalse($"the reference meets nothing: {says}");
+            hit.Fraction.Should().Be(1f, says);
+            hit.Position.Should().Be(to, says);
+            worst.Misses++;
+            return;
+        }
+
+        expected.Overlapping.Should().BeFalse($"a test's start must be clear of every shape: {says}");
+        hit.Hit.Should().BeTrue($"the reference meets {expected.Shape.Name}: {says}");
+        double travel = Math.Abs(((double)hit.Fraction - expected.T) * length);
+        double centre = (Local(hit.Position) - expected.Centre).Length;
+        double point = (Local(hit.Point) - expected.Point).Length;
+        double rounding = Global ? Math.Max(HalfSpacing(hit.Position), HalfSpacing(hit.Point)) : 0;
+        travel.Should().BeLessThanOrEqualTo(Tolerance, $"the travel to the contact: {says}");
+        centre.Should().BeLessThanOrEqualTo(Tolerance + rounding, $"the centre at the contact: {says}");
+        point.Should().BeLessThanOrEqualTo(Tolerance + rounding, $"the contact point: {says}");
+        double normal = 0;
+        if (expected.Normal is V3 n)
+        {
+            normal = (V3.Of(hit.Normal) - n).Length;
+            normal.Should().BeLessThanOrEqualTo(NormalTolerance, $"the normal: {says}");
+        }
+
+        expected.Together.Should().Contain(s => s.Kind == hit.Kind && s.Id == hit.Id, $"the engine names a shape met there ({hit.Kind} 0x{hit.Id:X8}): {says}");
+        worst.Add(travel, Global ? 0 : centre, Global ? 0 : point, normal);
+    }
+
+    /// <summary>Half the float spacing of a world point's largest coordinate, metres: what rounding it to floats may move it by on each axis, as a length.</summary>
+    public static double HalfSpacing(Vector3 p)
+    {
+        static double Half(float v) => (MathF.BitIncrement(MathF.Abs(v)) - MathF.Abs(v)) / 2.0;
+        return Math.Sqrt((Half(p.X) * Half(p.X)) + (Half(p.Y) * Half(p.Y)) + (Half(p.Z) * Half(p.Z)));
+    }
+}
+
+/// <summary>The worst deviations from the reference seen by a test (metres), and how many casts it compared.</summary>
+internal sealed class Deviations
+{
+    public double Travel { get; private set; }
+
+    public double Centre { get; private set; }
+
+    public double Point { get; private set; }
+
+    public double Normal { get; private set; }
+
+    public int Hits { get; private set; }
+
+    public int Misses { get; set; }
+
+    public void Add(double travel, double centre, double point, double normal)
+    {
+        Travel = Math.Max(Travel, travel);
+        Centre = Math.Max(Centre, centre);
+        Point = Math.Max(Point, point);
+        Normal = Math.Max(Normal, normal);
+        Hits++;
+    }
+
+    public override string ToString() => FormattableString.Invariant(
+        $"{Hits} contacts and {Misses} misses compared; worst |engine − reference|: travel {Travel:E2} m, centre {Centre:E2} m, point {Point:E2} m (centred frame), normal {Normal:E2}");
+}
+
+/// <summary>The worlds the cast tests use, each with its reference shapes.</summary>
+internal static class CastWorlds
+{
+    public const uint South = 0xA9B3FFFFu;
+
+    public static TheoryData<string> Frames() => new() { "centred", "global" };
+
+    public static PhysicsEngine NewEngine(string frame) => frame == "global" ? new PhysicsEngine() : new PhysicsEngine(TestData.Holtburg);
+
+    /// <summary>
+    /// <see cref="HoltburgCells.OnHills"/> with a seed, and its terrain as the reference has it: the heights read back at
+    /// the vertices (exact: a vertex's height is one table entry), and the flat south neighbour.
+    /// </summary>
+    public static (CastScene Scene, TerrainSurface Terrain) Hills(int seed, string frame)
+    {
+        (PhysicsEngine engine, TerrainSurface terrain) = HoltburgCells.OnHills(new Random(seed), frame);
+        var shapes = new List<Shape>();
+        shapes.AddRange(Terrain(VertexHeights(terrain), TestData.Holtburg, default));
+        shapes.AddRange(Terrain(Flat(94f), South, new V3(0, -192, 0)));
+        return (new CastScene(engine, frame, TestData.Holtburg, shapes), terrain);
+    }
+
+    /// <summary>The 81 vertex heights of a terrain, metres, x-major.</summary>
+    public static double[] VertexHeights(TerrainSurface terrain)
+    {
+        var heights = new double[81];
+        for (int x = 0; x < 9; x++)
+        {
+            for (int y = 0; y < 9; y++)
+            {
+                heights[(x * 9) + y] = terrain.SampleZ(24f * x, 24f * y);
+            }
+        }
+
+        return heights;
+    }
+
+    public static double[] Flat(float z) => Enumerable.Repeat((double)z, 81).ToArray();
+
+    /// <summary>The game's terrain triangles of a landblock whose south-west corner is at <paramref name="corner"/>.</summary>
+    public static IEnumerable<Shape> Terrain(double[] heights, uint landblockId, V3 corner) =>
+        CastReference.Terrain(heights, (int)(landblockId >> 24), (int)((landblockId >> 16) & 0xFF), corner);
+
+    /// <summary>Every physics polygon of the 22 real Holtburg cells (see <see cref="CastReference.Cell"/>).</summary>
+    public static IEnumerable<Shape> HoltburgCellShapes() =>
+        HoltburgCells.Fixtures.OrderBy(c => c.Key).SelectMany(c => Cell(c.Key, c.Value.EnvCell, c.Value.CellStruct));
+
+    /// <summary>The cottage's shell and the small building (building shells), placed by their frames.</summary>
+    public static IEnumerable<Shape> HoltburgBuildingShapes()
+    {
+        foreach (BuildingInfo building in ObjectPlacements.HoltburgInfo().Buildings)
+        {
+            foreach (Shape s in Model(RealObjects.GfxObjs[building.ModelId], building.Frame, SurfaceKind.BuildingShell, building.ModelId))
+            {
+                yield return s;
+            }
+        }
+    }
+
+    /// <summary>The two cellar stairs (objects standing in their cellars; their vertices are landblock-local, their frame the identity).</summary>
+    public static IEnumerable<Shape> CellarStairShapes() =>
+        ObjectPlacements.CellarStairs().SelectMany(s => Model(s.Stair, new Frame(), SurfaceKind.ObjectWall, s.Stair.Id));
+
+    /// <summary>
+    /// <see cref="RealObjects.HoltburgWithCellarStairs"/>: the real cells, the buildings and the cellar stairs on flat
+    /// terrain at 94 m (and the flat south neighbour); the reference with the terrain or without it (a cast that stays
+    /// indoors never meets the terrain, which does not reach into cells).
+    /// </summary>
+    public static CastScene Holtburg(string frame, bool terrain)
+    {
+        var shapes = new List<Shape>();
+        shapes.AddRange(HoltburgCellShapes());
+        shapes.AddRange(HoltburgBuildingShapes());
+        shapes.AddRange(CellarStairShapes());
+        if (terrain)
+        {
+            shapes.AddRange(Terrain(Flat(94f), TestData.Holtburg, default));
+            shapes.AddRange(Terrain(Flat(94f), South, new V3(0, -192, 0)));
+        }
+
+        return new CastScene(RealObjects.HoltburgWithCellarStairs(frame), frame, TestData.Holtburg, shapes);
+    }
+
+    /// <summary>The cottage's west door slab (<see cref="ObjectPlacements.DoorSlab"/>), its landblock-local origin and orientation.</summary>
+    public static (GfxObj Slab, Vector3 Origin, Quaternion Orientation) WestDoor() =>
+        ObjectPlacements.DoorSlab(HoltburgCells.Fixtures[ObjectPlacements.CottageWestDoorCell], 0xFFFF, ObjectPlacements.CottageWestDoorSlab);
+
+    /// <summary>A mover's walls for the reference: a GfxObj's polygons that are not floors, placed at a landblock-local origin and orientation.</summary>
+    public static IEnumerable<Shape> MoverWalls(GfxObj model, Vector3 origin, Quaternion orientation, uint id) =>
+        Model(model, new Frame { Origin = origin, Orientation = orientation }, SurfaceKind.Mover, id, floors: false);
+
+    /// <summary>A cylinder mover standing on a landblock-local point.</summary>
+    public static Shape MoverCylinder(Vector3 feet, float radius, float height, uint id) =>
+        new CastReference.Cylinder(feet.X, feet.Y, radius, feet.Z, (double)feet.Z + height, SurfaceKind.Mover, id, FormattableString.Invariant($"mover 0x{id:X8}"));
+}
