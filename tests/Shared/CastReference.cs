@@ -30,7 +30,7 @@ namespace AcDream.Testing;
 /// <para>
 /// Coordinates are a frame of the caller's choosing (the tests use one landblock's local metres). The answer names the
 /// shape met and every other shape met within <see cref="TieTolerance"/> of it along the path (two polygons sharing an
-/// edge, a floor on the terrain), so a test can accept any of them.
+/// edge, a floor on the terrain), so a test can accept any of them, and the normals the contact may have.
 /// </para>
 /// </remarks>
 internal sealed class CastReference
@@ -71,7 +71,6 @@ internal sealed class CastReference
         V3 move = to - from;
         double length = move.Length;
         (Shape Shape, double T)? best = null;
-        var found = new List<(Shape Shape, double T)>();
         foreach (Shape shape in _shapes)
         {
             if (!shape.MayMeet(from, to, radius))
@@ -82,7 +81,6 @@ internal sealed class CastReference
             double? t = FirstTouch(shape, from, move, length, radius);
             if (t is double value)
             {
-                found.Add((shape, value));
                 if (best is null || value < best.Value.T)
                 {
                     best = (shape, value);
@@ -97,11 +95,23 @@ internal sealed class CastReference
 
         V3 centre = from + (move * tFirst);
         V3 point = first.Closest(centre);
-        V3 away = centre - point;
-        double gap = away.Length;
-        V3? normal = gap > 1e-7 ? away * (1.0 / gap) : first.FaceNormal(point, from - point);
-        List<Shape> together = [.. found.Where(f => (f.T - tFirst) * length <= TieTolerance).Select(f => f.Shape)];
-        return new Hit(tFirst, centre, point, normal, first, together, Overlapping: tFirst == 0 && first.Distance(from) <= radius);
+        List<Shape> together = [.. _shapes.Where(s => s.MayMeet(centre, centre, radius + TieTolerance) && s.Distance(centre) <= radius + TieTolerance)];
+        var normals = new List<V3>();
+        foreach (Shape s in together)
+        {
+            V3 away = centre - s.Closest(centre);
+            double gap = away.Length;
+            if (radius > 0 && gap > 0)
+            {
+                normals.Add(away * (1.0 / gap));
+            }
+            else
+            {
+                normals.AddRange(s.Normals(s.Closest(centre), from - centre));
+            }
+        }
+
+        return new Hit(tFirst, centre, point, normals, first, together, Overlapping: tFirst == 0 && first.Distance(from) <= radius);
     }
 
     /// <summary>
@@ -171,11 +181,17 @@ internal sealed class CastReference
         throw new InvalidOperationException($"the reference did not settle on {shape.Name} within {MaxSteps} steps (a path closing on it ever more slowly)");
     }
 
-    /// <summary>The contact: the fraction, the centre, the point of the shape nearest the centre, the normal from the shape towards the sphere (null where a ray's contact has none: an edge or a corner), the shape and every shape met together with it.</summary>
-    public sealed record Hit(double T, V3 Centre, V3 Point, V3? Normal, Shape Shape, IReadOnlyList<Shape> Together, bool Overlapping)
+    /// <summary>
+    /// The contact: the fraction, the centre, the point of the shape nearest the centre, the shape met first and every
+    /// shape within <see cref="TieTolerance"/> of touching there (<see cref="Together"/>), and the normals the contact
+    /// may have: from each of those shapes' nearest points to the centre, or, for a ray on a shape, that shape's face
+    /// normals facing the start (one on a face; both faces' at an edge between two; the side's and the cap's at a
+    /// cylinder's rim).
+    /// </summary>
+    public sealed record Hit(double T, V3 Centre, V3 Point, IReadOnlyList<V3> Normals, Shape Shape, IReadOnlyList<Shape> Together, bool Overlapping)
     {
         public override string ToString() =>
-            FormattableString.Invariant($"t {T:R} centre {Centre} point {Point} normal {Normal} on {Shape.Name} ({string.Join(", ", Together.Select(s => s.Name))})");
+            FormattableString.Invariant($"t {T:R} centre {Centre} point {Point} normals [{string.Join(", ", Normals)}] on {Shape.Name} (touching: {string.Join(", ", Together.Select(s => s.Name))})");
     }
 
     /// <summary>A closed set in space, with what the engine is expected to name it.</summary>
@@ -195,8 +211,8 @@ internal sealed class CastReference
         /// <summary>The bounds of the shape.</summary>
         public abstract (V3 Min, V3 Max) Bounds { get; }
 
-        /// <summary>A face's unit normal at <paramref name="point"/> on the side of <paramref name="towards"/>; null where none is defined (an edge, a corner).</summary>
-        public abstract V3? FaceNormal(V3 point, V3 towards);
+        /// <summary>The unit normals of the faces at <paramref name="point"/> (a point of the shape), each on the side of <paramref name="towards"/>.</summary>
+        public abstract IEnumerable<V3> Normals(V3 point, V3 towards);
 
         /// <summary>Whether the sphere's path comes within reach of the bounds at all (a test that never excludes a contact).</summary>
         public bool MayMeet(V3 from, V3 to, double radius)
@@ -236,7 +252,7 @@ internal sealed class CastReference
         {
             // The foot of the perpendicular on the plane, if it lies inside: the polygon's nearest point.
             V3 foot = p - (_n * V3.Dot(p - _centre, _n));
-            if (Inside(foot, 0))
+            if (Inside(foot))
             {
                 return foot;
             }
@@ -257,18 +273,13 @@ internal sealed class CastReference
             return best;
         }
 
-        public override V3? FaceNormal(V3 point, V3 towards)
+        public override IEnumerable<V3> Normals(V3 point, V3 towards)
         {
-            if (!Inside(point, 1e-7))
-            {
-                return null; // on (or near) an edge or corner: no one normal
-            }
-
-            return V3.Dot(_n, towards) >= 0 ? _n : -_n;
+            yield return V3.Dot(_n, towards) >= 0 ? _n : -_n; // two-sided: the face towards the start
         }
 
-        /// <summary>Whether <paramref name="p"/> (on the plane) is inside the polygon by at least <paramref name="margin"/> metres from every edge.</summary>
-        private bool Inside(V3 p, double margin)
+        /// <summary>Whether <paramref name="p"/> (on the plane) is inside the polygon or on its outline.</summary>
+        private bool Inside(V3 p)
         {
             for (int i = 0, j = _v.Length - 1; i < _v.Length; j = i++)
             {
@@ -280,7 +291,7 @@ internal sealed class CastReference
                 }
 
                 // The inward side of the edge is to the left of it seen down the winding's normal.
-                if (V3.Dot(V3.Cross(e, p - _v[j]), _n) / el < margin)
+                if (V3.Dot(V3.Cross(e, p - _v[j]), _n) / el < 0)
                 {
                     return false;
                 }
@@ -302,17 +313,18 @@ internal sealed class CastReference
             return new V3(x + (dx * k), y + (dy * k), Math.Clamp(p.Z, z0, z1));
         }
 
-        public override V3? FaceNormal(V3 point, V3 towards)
+        public override IEnumerable<V3> Normals(V3 point, V3 towards)
         {
             double dx = point.X - x, dy = point.Y - y, rho = Math.Sqrt((dx * dx) + (dy * dy));
-            bool onSide = Math.Abs(rho - radius) < 1e-7, onCap = Math.Abs(point.Z - z0) < 1e-7 || Math.Abs(point.Z - z1) < 1e-7;
-            if (onSide == onCap)
+            if (Math.Abs(rho - radius) < 1e-7 && rho > 0)
             {
-                return null; // a rim (or inside)
+                yield return new V3(dx / rho, dy / rho, 0); // the side
             }
 
-            V3 n = onSide ? new V3(dx / rho, dy / rho, 0) : new V3(0, 0, 1);
-            return V3.Dot(n, towards) >= 0 ? n : -n;
+            if (Math.Abs(point.Z - z0) < 1e-7 || Math.Abs(point.Z - z1) < 1e-7)
+            {
+                yield return new V3(0, 0, towards.Z >= 0 ? 1 : -1); // a cap
+            }
         }
     }
 
