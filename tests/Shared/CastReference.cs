@@ -315,13 +315,14 @@ internal sealed class CastReference
 
         public override IEnumerable<V3> Normals(V3 point, V3 towards)
         {
+            // Within TieTolerance of the rim, both the side's and the cap's (a ray there may be met by either).
             double dx = point.X - x, dy = point.Y - y, rho = Math.Sqrt((dx * dx) + (dy * dy));
-            if (Math.Abs(rho - radius) < 1e-7 && rho > 0)
+            if (Math.Abs(rho - radius) < TieTolerance && rho > 0)
             {
                 yield return new V3(dx / rho, dy / rho, 0); // the side
             }
 
-            if (Math.Abs(point.Z - z0) < 1e-7 || Math.Abs(point.Z - z1) < 1e-7)
+            if (Math.Abs(point.Z - z0) < TieTolerance || Math.Abs(point.Z - z1) < TieTolerance)
             {
                 yield return new V3(0, 0, towards.Z >= 0 ? 1 : -1); // a cap
             }

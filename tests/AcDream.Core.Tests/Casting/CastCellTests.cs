@@ -42,31 +42,8 @@ public class CastCellTests(ITestOutputHelper output)
     {
         Hit? inside = indoors.Reference.Cast(a, b, r);
         double end = inside?.T ?? 1.0;
-        bool leaves = outdoorPortals.Any(p => Crossing(p, a, b) is double t && t < end);
+        bool leaves = outdoorPortals.Any(p => CastWorlds.Crossing(p, a, b) is double t && t < end);
         return leaves ? withGround.Reference.Cast(a, b, r) : inside;
-    }
-
-    /// <summary>Where the segment a–b passes through the convex polygon (its plane crossed inside it); null for nowhere.</summary>
-    private static double? Crossing(V3[] polygon, V3 a, V3 b)
-    {
-        V3 n = UnitNormal(polygon);
-        double da = V3.Dot(a - polygon[0], n), db = V3.Dot(b - polygon[0], n);
-        if (da * db > 0 || da == db)
-        {
-            return null;
-        }
-
-        double t = da / (da - db);
-        V3 p = a + ((b - a) * t);
-        for (int i = 0, j = polygon.Length - 1; i < polygon.Length; j = i++)
-        {
-            if (V3.Dot(V3.Cross(polygon[i] - polygon[j], p - polygon[j]), n) < -1e-9)
-            {
-                return null;
-            }
-        }
-
-        return t;
     }
 
     [Theory]

@@ -342,6 +342,44 @@ internal static class CastWorlds
         return new CastScene(RealObjects.HoltburgWithCellarStairs(frame), frame, TestData.Holtburg, shapes) { GeometryRounding = RealGeometry };
     }
 
+    /// <summary>
+    /// Holtburg as an outdoor cast meets it: the ground, the buildings' shells and the walls (ceilings among them) of
+    /// the cells, which are all reached from the outdoors through their doors; not the cells' floors or the objects
+    /// standing in cells, which are met only from inside.
+    /// </summary>
+    public static CastScene HoltburgOutdoors(string frame)
+    {
+        var shapes = new List<Shape>();
+        shapes.AddRange(HoltburgCellShapes().Where(s => s.Kind != SurfaceKind.CellFloor));
+        shapes.AddRange(HoltburgBuildingShapes());
+        shapes.AddRange(Terrain(Flat(94f), TestData.Holtburg, default));
+        shapes.AddRange(Terrain(Flat(94f), South, new V3(0, -192, 0)));
+        return new CastScene(RealObjects.HoltburgWithCellarStairs(frame), frame, TestData.Holtburg, shapes) { GeometryRounding = RealGeometry };
+    }
+
+    /// <summary>Where the segment a–b passes through the convex polygon (its plane crossed inside it); null for nowhere.</summary>
+    public static double? Crossing(V3[] polygon, V3 a, V3 b)
+    {
+        V3 n = UnitNormal(polygon);
+        double da = V3.Dot(a - polygon[0], n), db = V3.Dot(b - polygon[0], n);
+        if (da * db > 0 || da == db)
+        {
+            return null;
+        }
+
+        double t = da / (da - db);
+        V3 p = a + ((b - a) * t);
+        for (int i = 0, j = polygon.Length - 1; i < polygon.Length; j = i++)
+        {
+            if (V3.Dot(V3.Cross(polygon[i] - polygon[j], p - polygon[j]), n) < -1e-9)
+            {
+                return null;
+            }
+        }
+
+        return t;
+    }
+
     /// <summary>The cottage's west door slab (<see cref="ObjectPlacements.DoorSlab"/>), its landblock-local origin and orientation.</summary>
     public static (GfxObj Slab, Vector3 Origin, Quaternion Orientation) WestDoor() =>
         ObjectPlacements.DoorSlab(HoltburgCells.Fixtures[ObjectPlacements.CottageWestDoorCell], 0xFFFF, ObjectPlacements.CottageWestDoorSlab);
