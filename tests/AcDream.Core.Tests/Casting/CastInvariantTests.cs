@@ -174,4 +174,35 @@ public class CastInvariantTests(ITestOutputHelper output)
 
         changed[^1].Should().Be(0, "an id that names nothing changes nothing");
     }
+
+    [Theory]
+    [MemberData(nameof(CastWorlds.Frames), MemberType = typeof(CastWorlds))]
+    public void A_sphere_starting_overlapping_a_surface_stops_at_once_moving_into_it_and_is_free_of_it_moving_away_or_along(string frame)
+    {
+        // A wall (x = 96 of the field's frame, y 90–102, z 50–53), the ground at 50 m and a creature (2, at (92, 96)),
+        // each overlapped by 0.2 m of a 0.3 m sphere at the start.
+        PhysicsEngine engine = Field(frame, [3, 4, 9], tree: false);
+        GfxObj wall = DeterminismWalk.AddPhysicsPolygons(new GfxObj { Id = 0x01FF0C01, Flags = GfxObjFlags.HasPhysics }, [TestData.Wall(96, 90, 96, 102, 50, 53)]);
+        engine.AddLandblock(MoverSmokeTests.Landblock, TestData.FlatTerrain(50f, MoverSmokeTests.Landblock), [], [new ObjectSurface(wall, new Frame(), 0)]);
+        Vector3 At(float x, float y, float z) => engine.ToWorld(MoverSmokeTests.Landblock, new Vector3(x, y, z));
+        const float r = 0.3f;
+        (string What, Vector3 From, Vector3 Into, Vector3 Away, Vector3 Along, SurfaceKind Kind)[] cases =
+        [
+            ("the wall", At(95.9f, 95, 51.5f), new Vector3(1, 0.2f, 0), new Vector3(-1, 0.3f, 0.1f), new Vector3(0, 1, 0), SurfaceKind.ObjectWall),
+            ("the ground", At(100, 99, 50.1f), new Vector3(0.3f, 0, -1), new Vector3(0.3f, 0.2f, 1), new Vector3(1, 0.5f, 0), SurfaceKind.Terrain),
+            ("the creature", At(92, 96.58f, 51), new Vector3(0.1f, -1, 0), new Vector3(0, 1, 0.2f), new Vector3(1, 0, 0), SurfaceKind.Mover),
+        ];
+        foreach ((string what, Vector3 from, Vector3 into, Vector3 away, Vector3 along, SurfaceKind kind) in cases)
+        {
+            CastHit stopped = engine.Cast(from, 0, from + into, new CastOptions(r));
+            (stopped.Hit, stopped.Fraction, stopped.Position).Should().Be((true, 0f, from), $"{what}, moving into it: {stopped}");
+            stopped.Kind.Should().Be(kind, $"{what}: {stopped}");
+
+            CastHit leaving = engine.Cast(from, 0, from + away, new CastOptions(r));
+            leaving.Hit.Should().BeFalse($"{what}, moving away: {leaving}");
+            CastHit sliding = engine.Cast(from, 0, from + along, new CastOptions(r));
+            sliding.Hit.Should().BeFalse($"{what}, moving along it: {sliding}");
+            output.WriteLine($"[{frame}] {what}: into {stopped}; away {leaving.Hit}; along {sliding.Hit}");
+        }
+    }
 }
