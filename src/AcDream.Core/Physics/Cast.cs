@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics;
 [Flags]
 public enum CastFilter : byte
 {
-    /// <summary>It stops at everything: terrain, cells, objects and every registered mover, Ethereal or not (a pointer's ray).</summary>
+    /// <summary>It stops at everything: terrain, cells, objects and every registered mover, Ethereal or not, except one both Ethereal and IgnoreCollisions, which nothing meets (a pointer's ray).</summary>
     None = 0,
 
     /// <summary>It passes creatures and players (a camera's).</summary>
@@ -19,7 +19,7 @@ public enum CastFilter : byte
 /// <summary>The shape and filters of a cast.</summary>
 /// <param name="Radius">The sphere's radius, metres, ≥ 0; 0 is a ray.</param>
 /// <param name="Filter">What it passes.</param>
-/// <param name="IgnoreId">A mover id or an object's GfxObj/Setup id it passes (the player itself); 0: none.</param>
+/// <param name="IgnoreId">The id of a registered mover it passes (the player itself); 0: none.</param>
 public readonly record struct CastOptions(float Radius, CastFilter Filter = CastFilter.None, uint IgnoreId = 0);
 
 /// <summary>

@@ -71,6 +71,9 @@ internal struct SweptSphere
     /// <summary>The centre at fraction t, in the cast's frame.</summary>
     public readonly D3 At(double t) => Start + (Move * t);
 
+    /// <summary>Forgets every contact found (a centre passing in through a doorway: what lay beyond it outdoors is behind the cell's own walls).</summary>
+    public void Forget() => (T, Kind, Id) = (double.PositiveInfinity, SurfaceKind.None, 0);
+
     /// <summary>Ends the cast at <paramref name="t"/> when nothing was met before it (a portal to a cell not loaded, land not loaded).</summary>
     public void Stop(double t, D3 normal, SurfaceKind kind, uint id) => Keep(t, normal, kind, id);
 
