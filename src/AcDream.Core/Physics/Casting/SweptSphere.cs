@@ -38,9 +38,6 @@ internal readonly record struct D3(double X, double Y, double Z)
 /// </remarks>
 internal struct SweptSphere
 {
-    /// <summary>How far outside a polygon's edges (metres) its face still counts: shared edges of two polygons leave no gap.</summary>
-    private const double InsideTolerance = 1e-6;
-
     public SweptSphere(D3 start, D3 move, double radius)
     {
         (Start, Move, Radius, T) = (start, move, radius, double.PositiveInfinity);
@@ -139,7 +136,7 @@ internal struct SweptSphere
         }
     }
 
-    /// <summary>Whether <paramref name="p"/>, on the plane of the convex polygon <paramref name="v"/> (normal <paramref name="n"/>), is inside it or within <see cref="InsideTolerance"/> of its edges.</summary>
+    /// <summary>Whether <paramref name="p"/>, on the plane of the convex polygon <paramref name="v"/> (normal <paramref name="n"/>), is inside it or within <see cref="PhysicsConstants.CastEdgeTolerance"/> of its edges.</summary>
     private static bool Inside(ReadOnlySpan<D3> v, D3 n, D3 p)
     {
         for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
@@ -147,7 +144,7 @@ internal struct SweptSphere
             D3 e = v[i] - v[j];
             D3 inward = D3.Cross(n, e);
             double el = e.Length;
-            if (el > 0 && D3.Dot(p - v[j], inward) < -InsideTolerance * el)
+            if (el > 0 && D3.Dot(p - v[j], inward) < -PhysicsConstants.CastEdgeTolerance * el)
             {
                 return false;
             }
@@ -308,7 +305,8 @@ internal struct SweptSphere
     /// The rim circle at <paramref name="z"/> (the top's, <paramref name="up"/> 1, or the bottom's, −1): where the sphere
     /// first comes within its radius of the circle while beyond the cap and outside the side (the side and caps answer
     /// elsewhere). Found by advancing the sphere by its distance to the circle (a distance never overshoots), at most
-    /// 64 times; a graze that has not closed to 1e-9 m by then is a miss.
+    /// <see cref="PhysicsConstants.CastRimAdvances"/> times; a graze that has not closed to
+    /// <see cref="PhysicsConstants.CastRimTolerance"/> by then is a miss.
     /// </summary>
     private void Rim(double axisX, double axisY, double radius, double z, double up, SurfaceKind kind, uint id)
     {
@@ -320,14 +318,14 @@ internal struct SweptSphere
 
         double t = 0;
         double limit = Math.Min(T, 1.0);
-        for (int i = 0; i < 64 && t <= limit; i++)
+        for (int i = 0; i < PhysicsConstants.CastRimAdvances && t <= limit; i++)
         {
             D3 centre = Move * t;
             double hx = centre.X - axisX, hy = centre.Y - axisY, rho = Math.Sqrt((hx * hx) + (hy * hy));
             double gap = Math.Sqrt(((rho - radius) * (rho - radius)) + ((centre.Z - z) * (centre.Z - z))) - Radius;
-            if (gap <= 1e-9)
+            if (gap <= PhysicsConstants.CastRimTolerance)
             {
-                if (i == 0 && gap < -1e-9)
+                if (i == 0 && gap < -PhysicsConstants.CastRimTolerance)
                 {
                     return; // overlapping at the start: the side and caps decide
                 }

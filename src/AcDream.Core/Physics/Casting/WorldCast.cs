@@ -520,7 +520,7 @@ internal static class WorldCast
         public static Box Of(in SweptSphere ray, double t0, double t1, D3 offset)
         {
             D3 a = ray.At(t0) - offset, b = ray.At(t1) - offset;
-            double grow = ray.Radius + 1e-3;
+            double grow = ray.Radius + PhysicsConstants.CastBoxMargin;
             return new Box(
                 new Vector2((float)(Math.Min(a.X, b.X) - grow), (float)(Math.Min(a.Y, b.Y) - grow)),
                 new Vector2((float)(Math.Max(a.X, b.X) + grow), (float)(Math.Max(a.Y, b.Y) + grow)),
