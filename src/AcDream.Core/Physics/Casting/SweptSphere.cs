@@ -270,9 +270,10 @@ internal struct SweptSphere
             }
         }
 
-        // The caps: the centre a radius above the top (or below the bottom) within the cylinder's radius.
-        Cap(axisX, axisY, radius, z1 + Radius, dz < 0 && z1 + Radius <= 0, 1.0, kind, id);
-        Cap(axisX, axisY, radius, z0 - Radius, dz > 0 && z0 - Radius >= 0, -1.0, kind, id);
+        // The caps: the centre a radius above the top (or below the bottom) within the cylinder's radius, approached from
+        // above it (below it); a centre already within the radius of the cap is met at once.
+        Cap(axisX, axisY, radius, z1 + Radius, dz < 0 && z1 < 0, 1.0, kind, id);
+        Cap(axisX, axisY, radius, z0 - Radius, dz > 0 && z0 > 0, -1.0, kind, id);
 
         if (Radius > 0)
         {
@@ -288,7 +289,7 @@ internal struct SweptSphere
             return;
         }
 
-        double t = planeZ / Move.Z;
+        double t = Math.Max(planeZ / Move.Z, 0.0);
         if (!(t < T) || t > 1.0)
         {
             return;
@@ -325,15 +326,13 @@ internal struct SweptSphere
             double gap = Math.Sqrt(((rho - radius) * (rho - radius)) + ((centre.Z - z) * (centre.Z - z))) - Radius;
             if (gap <= PhysicsConstants.CastRimTolerance)
             {
-                if (i == 0 && gap < -PhysicsConstants.CastRimTolerance)
+                // Touching (or, at the start, overlapping) the rim beyond the cap and outside the side: met when moving
+                // towards the circle (an overlap left behind is free).
+                double k = rho > 0 ? radius / rho : 0;
+                var away = new D3(hx - (hx * k), hy - (hy * k), centre.Z - z);
+                if ((centre.Z - z) * up > 0 && rho > radius && (i > 0 || D3.Dot(away, Move) < 0))
                 {
-                    return; // overlapping at the start: the side and caps decide
-                }
-
-                if ((centre.Z - z) * up > 0 && rho > radius)
-                {
-                    double k = rho > 0 ? radius / rho : 0;
-                    Keep(t, Towards(new D3(hx - (hx * k), hy - (hy * k), centre.Z - z)), kind, id);
+                    Keep(t, Towards(away), kind, id);
                 }
 
                 return;
