@@ -110,7 +110,7 @@ internal struct SweptSphere
         var c = new D3(cx / v.Length, cy / v.Length, cz / v.Length);
         double s0 = -D3.Dot(n, c); // the start's signed distance from the plane
         double rate = D3.Dot(n, Move);
-        double side = s0 > 0 || (s0 == 0 && rate < 0) ? 1.0 : -1.0;
+        double side = s0 > 0 || (s0 == 0 && rate > 0) ? 1.0 : -1.0; // a start on the plane is on the side it moves to: away
         if (side * rate < 0)
         {
             // Approaching the plane: the face is met when the centre is a radius from it.
