@@ -112,7 +112,7 @@ internal static partial class WalkSvg
             profile.Add(Line(a, b, "#ccc", 0.5f));
         }
 
-        profile.Add(EyePath(samples, s => Profile(s.Frame, s.Camera.Eye.Z), s => new Vector2(s.Frame * EyePathSpacing, s.Camera.Eye.Z)));
+        profile.Add(EyePath(samples, s => Profile(s.Frame, s.Camera.Eye.Z), null));
         AddRoute(profile, samples, colours, s => Profile(s.Frame, s.Position.Z));
         profile.Add(Label(Margin, profileTop - 8, Invariant($"Z (m) over frames 0..{frames} at {SceneRunner.FramesPerSecond} Hz; grey lines: leg starts; cyan: the camera's eye"), 13));
 
@@ -210,17 +210,17 @@ internal static partial class WalkSvg
 
     /// <summary>
     /// The chase camera's eye (<see cref="FrameSample.Camera"/>) in <see cref="EyeColour"/>: one line through the frames'
-    /// eyes at least <see cref="EyePathSpacing"/> apart (by <paramref name="spacing"/>, metres on the map) and the last,
-    /// titled with the frames pulled in.
+    /// eyes, titled with the frames pulled in: on the map through those at least <see cref="EyePathSpacing"/> apart
+    /// (<paramref name="ground"/>: where each is, metres) and the last; with no <paramref name="ground"/>, through every frame's.
     /// </summary>
-    private static XElement EyePath(IReadOnlyList<FrameSample> samples, Func<FrameSample, Vector2> place, Func<FrameSample, Vector2> spacing)
+    private static XElement EyePath(IReadOnlyList<FrameSample> samples, Func<FrameSample, Vector2> place, Func<FrameSample, Vector2>? ground)
     {
         var points = new StringBuilder();
         Vector2? last = null;
         for (int i = 0; i < samples.Count; i++)
         {
-            Vector2 at = spacing(samples[i]);
-            if (last is not Vector2 previous || Vector2.Distance(at, previous) >= EyePathSpacing || i == samples.Count - 1)
+            Vector2 at = ground?.Invoke(samples[i]) ?? default;
+            if (ground is null || last is not Vector2 previous || Vector2.Distance(at, previous) >= EyePathSpacing || i == samples.Count - 1)
             {
                 Vector2 p = place(samples[i]);
                 points.Append(Invariant($"{p.X:0.##},{p.Y:0.##} "));
