@@ -36,12 +36,12 @@ public sealed class PointerTests(DefaultWalk walk) : IClassFixture<DefaultWalk>
         Vector3 p = AtHeight(ground.Pointer, player.Position.Z + 1f); // the ray one metre over the player's feet
         Vector2.Distance(new Vector2(p.X, p.Y), new Vector2(player.Position.X, player.Position.Y)).Should().BeLessThan(MoverBody.Player.Radius, $"the ray passes through the player's body (at {player.Position}), which it ignores: {Show(ground)}");
 
-        // The upper floor 0x014D (97 m) through the upper doorway 0x014E's portal to the outdoors.
-        PointerResult floor = Ray("the upper floor");
-        (floor.Hit.Hit, floor.Hit.Kind, floor.Hit.Id, floor.Hit.CellId).Should().Be((true, SurfaceKind.CellFloor, 0xA9B4014Du, 0xA9B4014Du), Show(floor));
-        Vector3.Distance(floor.Hit.Point, AtHeight(floor.Pointer, 97f)).Should().BeLessThan(1e-3f, Show(floor));
-        OutdoorPortals(walk.World).Where(d => d.CellId == 0xA9B4014Eu).Should().ContainSingle()
-            .Which.Polygon.Should().Match<Testing.ReferenceBody.Vec3[]>(d => Crosses(V(floor.Pointer.From), V(floor.Hit.Point), d), "the ray goes in through the upper doorway");
+        // The north room 0x0141's floor (94 m, level with the terrain under the cottage) through the north doorway 0x014F's portal to the outdoors.
+        PointerResult floor = Ray("the north room's floor");
+        (floor.Hit.Hit, floor.Hit.Kind, floor.Hit.Id, floor.Hit.CellId).Should().Be((true, SurfaceKind.CellFloor, 0xA9B40141u, 0xA9B40141u), Show(floor));
+        Vector3.Distance(floor.Hit.Point, AtHeight(floor.Pointer, 94f)).Should().BeLessThan(1e-3f, Show(floor));
+        OutdoorPortals(walk.World).Where(d => d.CellId == 0xA9B4014Fu).Should().ContainSingle()
+            .Which.Polygon.Should().Match<Testing.ReferenceBody.Vec3[]>(d => Crosses(V(floor.Pointer.From), V(floor.Hit.Point), d), "the ray goes in through the north doorway");
 
         // The shell: the point is on one of its walls, the first the ray meets.
         PointerResult shell = Ray("the cottage shell");
@@ -72,7 +72,7 @@ public sealed class PointerTests(DefaultWalk walk) : IClassFixture<DefaultWalk>
         var expected = new Dictionary<string, string>
         {
             ["the ground"] = "terrain 0xA9B40029 at (133.70, 0.50, 94.00)",
-            ["the upper floor"] = "cell floor 0xA9B4014D (cottage, upper floor east) at (139.40, 7.00, 97.00)",
+            ["the north room's floor"] = "cell floor 0xA9B40141 (cottage, north room) at (139.40, 17.00, 94.00)",
             ["the cottage shell"] = "building shell 0x01000A2B (cottage shell) at (128.00, ",
             ["the creature"] = "mover 0x80000001 (creature) at (99.55, 9.37, 95.20)",
             ["the open west door"] = "mover 0x7A9B4145 (cottage west door) at (136.29, 5.15, 95.25)",
