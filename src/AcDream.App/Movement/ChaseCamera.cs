@@ -85,8 +85,8 @@ public sealed class ChaseCamera
     public const float Skin = 0.01f;
 
     /// <summary>
-    /// How far above the feet the pivot's ray starts: 0.05 m. The engine reports a cast that starts exactly on a floor
-    /// or the terrain as meeting it at once, from below, even moving up away from it; the feet stand exactly there.
+    /// How far above the feet the pivot's ray starts: 0.05 m, clear of the floor the feet stand on (a cast starting on
+    /// it and moving up is free of it; one starting a rounding below it, as a feet position far out may be, would not be).
     /// </summary>
     public const float FootLift = 0.05f;
 
