@@ -23,7 +23,8 @@ internal static class MainJob
         Usage: dotnet run --project src/AcDream.App -- [options]
 
         Runs a scripted walk through the physics engine, headless, and prints what happened:
-        the cells visited, moves slid along walls and refused, airborne frames, landblocks
+        the cells visited, moves slid along walls and refused, where a chase camera's boom
+        was pulled in, what the scene's pointer rays met, airborne frames, landblocks
         streamed, the end point.
         Writes an SVG (top-down map and Z profile) to the output folder.
 

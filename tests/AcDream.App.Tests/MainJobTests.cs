@@ -254,6 +254,35 @@ public sealed class MainJobTests : IDisposable
     }
 
     [Fact]
+    public void SceneReader_Pointers_ReadInOrder()
+    {
+        Scene scene = SceneReader.Parse("""
+            { "name": "t", "start": { "position": [10, 10] }, "legs": [ { "name": "a", "to": [11, 10] }, { "name": "b", "to": [12, 10] } ],
+              "pointers": [ { "name": "down", "afterLeg": 2, "from": [10, 10, 5], "towards": [12, 10, 0] }, { "name": "east", "afterLeg": 1, "from": [-200, 300, 1e2], "towards": [0, 0, 0] } ] }
+            """, "test.json");
+
+        scene.Pointers.Should().Equal([new ScenePointer("down", 2, new Vector3(10, 10, 5), new Vector3(12, 10, 0)), new ScenePointer("east", 1, new Vector3(-200, 300, 100), Vector3.Zero)]);
+        SceneReader.Parse("""{ "name": "t", "start": { "position": [10, 10] }, "legs": [ { "name": "a", "to": [11, 10] } ] }""", "test.json").Pointers.Should().BeEmpty();
+    }
+
+    [Theory]
+    [InlineData("""{ "name": "p", "afterLeg": 1, "from": [1, 2, 3] }""", "pointers[0].towards", "is missing")]
+    [InlineData("""{ "name": "p", "afterLeg": 2, "from": [1, 2, 3], "towards": [4, 5, 6] }""", "pointers[0].afterLeg", "between 1 and 1")]
+    [InlineData("""{ "name": "p", "afterLeg": 0.5, "from": [1, 2, 3], "towards": [4, 5, 6] }""", "pointers[0].afterLeg", "between 1 and 1")]
+    [InlineData("""{ "name": "p", "from": [1, 2, 3], "towards": [4, 5, 6] }""", "pointers[0].afterLeg", "is missing")]
+    [InlineData("""{ "name": "p", "afterLeg": 1, "from": [1, 2], "towards": [4, 5, 6] }""", "pointers[0].from", "[x, y, z]")]
+    [InlineData("""{ "name": "p", "afterLeg": 1, "from": [1, 2, 3], "towards": [1, 2, 3] }""", "pointers[0].towards", "must differ")]
+    [InlineData("""{ "name": "p", "afterLeg": 1, "from": [5000, 2, 3], "towards": [1, 2, 3] }""", "pointers[0].from", "within 384 m")]
+    [InlineData("""{ "name": "", "afterLeg": 1, "from": [1, 2, 3], "towards": [4, 5, 6] }""", "pointers[0].name", "non-empty")]
+    [InlineData("""{ "name": "p", "afterLeg": 1, "from": [1, 2, 3], "towards": [4, 5, 6], "radius": 1 }""", "pointers[0].radius", "unknown field")]
+    [InlineData("\"p\"", "pointers[0]", "JSON object")]
+    public void SceneReader_BadPointer_NamesTheField(string pointer, string field, string problem)
+    {
+        FluentActions.Invoking(() => SceneReader.Parse($$"""{ "name": "t", "start": { "position": [10, 10] }, "legs": [ { "name": "a", "to": [11, 10] } ], "pointers": [ {{pointer}} ] }""", "bad.json"))
+            .Should().Throw<SceneFormatException>().WithMessage($"bad.json: field {field}: *{problem}*");
+    }
+
+    [Fact]
     public void Run_NoArguments_PrintsSummaryAndWritesAWellFormedSvg()
     {
         var output = new StringWriter();
@@ -263,13 +292,15 @@ public sealed class MainJobTests : IDisposable
 
         status.Should().Be(0, error.ToString());
         string svg = Path.Combine(_folder, "holtburg-walk.svg");
-        output.ToString().Should().Contain($"SVG: {svg}").And.Contain("Cells visited").And.Contain("0xA9B40174").And.Contain("stairs").And.Contain("Refused moves");
+        output.ToString().Should().Contain($"SVG: {svg}").And.Contain("Cells visited").And.Contain("0xA9B40174").And.Contain("stairs").And.Contain("Refused moves")
+            .And.Contain("Camera: a chase camera").And.Contain("Camera pulled in, per leg").And.Contain("Pointer rays (radius 0, at most 100 m");
         XDocument document = XDocument.Load(svg);
         XNamespace ns = "http://www.w3.org/2000/svg";
         document.Root!.Name.Should().Be(ns + "svg");
         document.Descendants(ns + "polyline").Count().Should().BeGreaterThan(20, "the route, one line per cell run, on the map and on the profile");
         document.Descendants(ns + "path").Should().NotBeEmpty("terrain contours");
         document.Descendants(ns + "g").Select(g => (string?)g.Attribute("id")).Should().Contain(["map", "profile", "floor-plans", "contours", "body-clearance"]);
+        document.Descendants(ns + "polyline").Count(l => (string?)l.Attribute("class") == "camera-eye").Should().Be(2, "the eye's path on the map and its Z in the profile");
     }
 
     [Fact]

@@ -92,6 +92,52 @@ public class WalkSvgTests
         point.Descendants(Svg + "g").Should().NotContain(g => (string?)g.Attribute("id") == "body-clearance", "a point mover has no body to draw");
     }
 
+    [Fact]
+    public void Build_DrawsTheCamerasEyeBesideTheRouteOnTheMapAndInTheProfile()
+    {
+        var world = new HoltburgWorld();
+        Scene scene = SceneReader.Parse("""
+            { "name": "eye", "start": { "position": [134, 5.15], "heading": 90 }, "effects": "player",
+              "legs": [ { "name": "in", "to": [137.2, 5.15] }, { "name": "room", "to": [139, 10] }, { "name": "back into the east wall", "to": [142.5, 10], "backward": true, "seconds": 2 } ] }
+            """, "test");
+        WalkRecord record = SceneRunner.Run(scene, world);
+        XDocument svg = WalkSvg.Build(record, world);
+        XElement Group(string id) => svg.Descendants(Svg + "g").Single(g => (string?)g.Attribute("id") == id);
+
+        // The map is x' = a + s·x, y' = b − s·y: fit it on the floors, as the engine has them.
+        var frame = new PhysicsEngine(HoltburgWorld.Holtburg);
+        Vector3[] corners = [.. world.CellSurfaces.SelectMany(c => c.GetFloorTriangles().Select(t => frame.ToWorld(c.CellId, t.A)))];
+        Vector2[] drawnCorners = [.. Group("floors").Elements(Svg + "polygon").Select(p => Points((string)p.Attribute("points")!)[0])];
+        int far = Array.FindIndex(corners, c => MathF.Abs(c.X - corners[0].X) > 10f);
+        float scale = (drawnCorners[far].X - drawnCorners[0].X) / (corners[far].X - corners[0].X);
+        float a = drawnCorners[0].X - (scale * corners[0].X), b = drawnCorners[0].Y + (scale * corners[0].Y);
+
+        XElement eye = Group("map").Elements(Svg + "polyline").Single(l => (string?)l.Attribute("class") == "camera-eye");
+        Vector2[] drawn = Points((string)eye.Attribute("points")!);
+        Vector2[] eyes = [.. record.Samples.Select(s => new Vector2(a + (scale * s.Camera.Eye.X), b - (scale * s.Camera.Eye.Y)))];
+        drawn.Length.Should().BeGreaterThan(20).And.BeLessThanOrEqualTo(eyes.Length);
+        Vector2.Distance(drawn[0], eyes[0]).Should().BeLessThan(0.05f, "the line starts at the start's eye");
+        Vector2.Distance(drawn[^1], eyes[^1]).Should().BeLessThan(0.05f, "and ends at the last frame's");
+        int at = 0;
+        foreach (Vector2 point in drawn)
+        {
+            while (at < eyes.Length && Vector2.Distance(point, eyes[at]) >= 0.05f)
+            {
+                at++;
+            }
+
+            at.Should().BeLessThan(eyes.Length, $"the point {point} is a frame's eye, in frame order");
+        }
+
+        string colour = (string)eye.Attribute("stroke")!;
+        svg.Descendants(Svg + "polyline").Where(l => (string?)l.Attribute("class") != "camera-eye").Should().OnlyContain(l => (string?)l.Attribute("stroke") != colour, "a colour of its own");
+        XElement height = Group("profile").Elements(Svg + "polyline").Single(l => (string?)l.Attribute("class") == "camera-eye");
+        Points((string)height.Attribute("points")!).Should().HaveCount(record.Samples.Count, "the eye's Z at every frame");
+        ((string)eye.Element(Svg + "title")!).Should().Be($"the chase camera's eye: {record.Samples.Count} frames, pulled in at {record.Samples.Count(s => s.Camera.PulledIn)}");
+        record.Samples.Count(s => s.Camera.PulledIn).Should().BePositive("backing into the wall pulls it in");
+        svg.Descendants(Svg + "text").Select(t => t.Value).Should().Contain(t => t.StartsWith("the chase camera's eye", StringComparison.Ordinal), "the legend names it");
+    }
+
     private static float Number(XElement element, string attribute) => float.Parse((string)element.Attribute(attribute)!, CultureInfo.InvariantCulture);
 
     private static Vector2[] Points(string points) =>

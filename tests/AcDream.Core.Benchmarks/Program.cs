@@ -22,7 +22,7 @@ if (args.Contains("--accuracy"))
 if (args.Contains("--walk-hash"))
 {
     DeterminismWalk.Summary walk = DeterminismWalk.Run(ObjectWorld.GfxObjs());
-    Console.WriteLine($"{walk.Hash:X16} ({walk.Answers} answers: {walk.Slid} slid, {walk.OnObjects} on object floors, {walk.Refused} refused)");
+    Console.WriteLine($"{walk.Hash:X16} ({walk.Answers} answers: {walk.Slid} slid, {walk.OnObjects} on object floors, {walk.Refused} refused; casts met something: {walk.CameraHits} camera, {walk.RayHits} ray)");
     return 0;
 }
 

@@ -12,14 +12,15 @@ namespace AcDream.Testing;
 /// on different processors need. Four landblocks of rolling terrain at the far corner of the world, each with
 /// real buildings and stair pieces, made-up trees and low platforms at random (some reaching over the
 /// seams); walks toward them of 5 cm to 4 m per move with the point, the body and
-/// <see cref="MovementOptions.Player"/>, in the global frame and one centred far away.
+/// <see cref="MovementOptions.Player"/>, in the global frame and one centred far away; after every move a chase
+/// camera's cast (a 0.3 m sphere) behind the mover and a 40 m ray ahead of it.
 /// </summary>
 internal static class DeterminismWalk
 {
     private static readonly uint[] Landblocks = [0xFDFDFFFFu, 0xFEFDFFFFu, 0xFDFEFFFFu, 0xFEFEFFFFu];
 
-    /// <summary>What a walk did: the hash of every answer, how many there were, and how many slid, stood on an object or were refused.</summary>
-    public readonly record struct Summary(ulong Hash, int Answers, int Slid, int OnObjects, int Refused);
+    /// <summary>What a walk did: the hash of every answer, how many there were, how many slid, stood on an object or were refused, and how many casts met something (camera, ray).</summary>
+    public readonly record struct Summary(ulong Hash, int Answers, int Slid, int OnObjects, int Refused, int CameraHits, int RayHits);
 
     /// <summary>
     /// Runs the walk with the real objects <paramref name="gfxObjs"/> (the cottage shell 0x01000A2B, the small
@@ -28,7 +29,7 @@ internal static class DeterminismWalk
     public static Summary Run(IReadOnlyDictionary<uint, GfxObj> gfxObjs, int walks = 30, int moves = 40)
     {
         ulong hash = 14695981039346656037ul;
-        int answers = 0, slid = 0, onObjects = 0, refused = 0;
+        int answers = 0, slid = 0, onObjects = 0, refused = 0, cameraHits = 0, rayHits = 0;
         foreach (bool global in new[] { true, false })
         {
             foreach (MovementOptions options in new[] { MovementOptions.Literal, new MovementOptions { Body = MoverBody.Player }, MovementOptions.Player })
@@ -71,6 +72,14 @@ internal static class DeterminismWalk
                             break;
                         }
 
+                        // The chase camera's cast behind the mover and a pointer's ray ahead and down (every shape a cast meets, in double).
+                        var forward = new Vector3(MathF.Cos(heading), MathF.Sin(heading), 0f);
+                        Vector3 pivot = r.Position + new Vector3(0f, 0f, 1.5f);
+                        CastHit eye = engine.Cast(pivot, r.CellId, pivot - (forward * 2.5f) + new Vector3(0f, 0f, 0.75f), new CastOptions(0.3f));
+                        CastHit ray = engine.Cast(pivot, r.CellId, pivot + (forward * 40f) - new Vector3(0f, 0f, 4f), new CastOptions(0f));
+                        hash = Mix(Mix(hash, eye), ray);
+                        (cameraHits, rayHits) = (cameraHits + (eye.Hit ? 1 : 0), rayHits + (ray.Hit ? 1 : 0));
+
                         bool found = engine.TryGetGround(r.Position, r.CellId, 0.6f, out float ground, out Vector3 normal, out uint objectId);
                         hash = Mix(Mix(hash, BitConverter.SingleToUInt32Bits(ground)), BitConverter.SingleToUInt32Bits(normal.X) ^ BitConverter.SingleToUInt32Bits(normal.Y) ^ objectId);
                         onObjects += found && objectId != 0 && r.IsOnGround ? 1 : 0;
@@ -80,7 +89,7 @@ internal static class DeterminismWalk
             }
         }
 
-        return new Summary(hash, answers, slid, onObjects, refused);
+        return new Summary(hash, answers, slid, onObjects, refused, cameraHits, rayHits);
     }
 
     /// <summary>Heights in metres per table index: a quarter metre.</summary>
@@ -178,6 +187,14 @@ internal static class DeterminismWalk
         hash = Mix(hash, BitConverter.SingleToUInt32Bits(r.SurfaceNormal.X));
         hash = Mix(hash, BitConverter.SingleToUInt32Bits(r.SurfaceNormal.Y));
         return Mix(hash, BitConverter.SingleToUInt32Bits(r.SurfaceNormal.Z));
+    }
+
+    private static ulong Mix(ulong hash, in CastHit h)
+    {
+        hash = Mix(hash, BitConverter.SingleToUInt32Bits(h.Fraction) ^ (uint)h.Kind ^ h.Id ^ h.CellId);
+        hash = Mix(hash, BitConverter.SingleToUInt32Bits(h.Position.X) ^ BitConverter.SingleToUInt32Bits(h.Point.Y));
+        hash = Mix(hash, BitConverter.SingleToUInt32Bits(h.Position.Z) ^ BitConverter.SingleToUInt32Bits(h.Normal.X));
+        return Mix(hash, BitConverter.SingleToUInt32Bits(h.Normal.Y) ^ BitConverter.SingleToUInt32Bits(h.Normal.Z));
     }
 
     private static ulong Mix(ulong hash, uint value)

@@ -15,8 +15,10 @@ namespace AcDream.App.Scenes;
 /// <param name="Objects">The object sets registered (<c>"objects"</c>, <see cref="World.HoltburgWorld.ObjectSets"/>; default none).</param>
 /// <param name="Creatures">The creatures (<c>"creatures"</c>; default none), in order: creature i has the mover id <c>SceneRunner.FirstCreatureId + i</c>.</param>
 /// <param name="Doors">The doors registered (<c>"doors"</c>, <see cref="World.HoltburgWorld.DoorSets"/>; default none), closed until a leg opens them.</param>
+/// <param name="Pointers">The pointer rays cast after legs (<c>"pointers"</c>; default none), in order.</param>
 internal sealed record Scene(string Name, string Source, Vector2 Start, float StartHeadingDegrees, IReadOnlyList<SceneLeg> Legs, IReadOnlyList<string> Notes, MovementOptions Effects,
-    string World = World.HoltburgWorld.Worlds.Holtburg, IReadOnlyList<string>? Objects = null, IReadOnlyList<SceneCreature>? Creatures = null, IReadOnlyList<string>? Doors = null)
+    string World = World.HoltburgWorld.Worlds.Holtburg, IReadOnlyList<string>? Objects = null, IReadOnlyList<SceneCreature>? Creatures = null, IReadOnlyList<string>? Doors = null,
+    IReadOnlyList<ScenePointer>? Pointers = null)
 {
     /// <summary>The world this scene walks, with its objects.</summary>
     public World.HoltburgWorld CreateWorld() => new(World, Objects ?? []);

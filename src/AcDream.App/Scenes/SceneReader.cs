@@ -35,8 +35,12 @@ internal static class SceneReader
     /// <summary>Farthest a creature may wander from its home, metres.</summary>
     public const float MaxWander = 50f;
 
-    private static readonly string[] SceneFields = ["name", "world", "objects", "start", "legs", "notes", "effects", "creatures", "doors"];
+    /// <summary>Most pointer rays a scene may have.</summary>
+    public const int MaxPointers = 64;
+
+    private static readonly string[] SceneFields = ["name", "world", "objects", "start", "legs", "notes", "effects", "creatures", "doors", "pointers"];
     private static readonly string[] CreatureFields = ["at", "wander", "seed"];
+    private static readonly string[] PointerFields = ["name", "afterLeg", "from", "towards"];
     /// <summary>Largest body radius a scene may give, metres.</summary>
     public const float MaxBodyRadius = 10f;
 
@@ -162,7 +166,8 @@ internal static class SceneReader
 
             List<string> objects = ReadNames(context, root, "objects", HoltburgWorld.ObjectSets, world, "object set");
             List<SceneCreature> creatures = ReadCreatures(context, root);
-            return new Scene(name, source, position, heading, legs, notes, effects, world, objects, creatures, doors);
+            List<ScenePointer> pointers = ReadPointers(context, root, legs.Count);
+            return new Scene(name, source, position, heading, legs, notes, effects, world, objects, creatures, doors, pointers);
         }
     }
 
@@ -244,6 +249,54 @@ internal static class SceneReader
         }
 
         return creatures;
+    }
+
+    /// <summary>
+    /// <c>"pointers"</c>: at most <see cref="MaxPointers"/>, each <c>{ "name": text, "afterLeg": n, "from": [x, y, z], "towards": [x, y, z] }</c>,
+    /// all required: <c>afterLeg</c> a leg's number (1 to the number of legs); <c>from</c> within <see cref="MaxStartDistance"/>
+    /// of (96, 96) along X and Y, as the start; <c>towards</c> another point.
+    /// </summary>
+    private static List<ScenePointer> ReadPointers(Context context, JsonElement root, int legCount)
+    {
+        var pointers = new List<ScenePointer>();
+        if (!root.TryGetProperty("pointers", out JsonElement element))
+        {
+            return pointers;
+        }
+
+        if (element.ValueKind != JsonValueKind.Array || element.GetArrayLength() > MaxPointers)
+        {
+            throw context.Error("pointers", element, $"must be an array of at most {MaxPointers} pointer rays");
+        }
+
+        foreach (JsonElement pointer in element.EnumerateArray())
+        {
+            string path = $"pointers[{pointers.Count}]";
+            context.RequireObject(pointer, path, PointerFields);
+            string name = context.RequireString(pointer, "name", $"{path}.name");
+            context.Require(pointer, "afterLeg", $"{path}.afterLeg");
+            float leg = context.OptionalNumber(pointer, "afterLeg", $"{path}.afterLeg", 0f, 1f, legCount);
+            if (leg != MathF.Floor(leg))
+            {
+                throw context.Error($"{path}.afterLeg", pointer.GetProperty("afterLeg"), "must be a whole number");
+            }
+
+            Vector3 from = context.RequirePoint3(pointer, "from", $"{path}.from");
+            if (MathF.Abs(from.X - 96f) > MaxStartDistance || MathF.Abs(from.Y - 96f) > MaxStartDistance)
+            {
+                throw context.Error($"{path}.from", pointer.GetProperty("from"), $"must be within {MaxStartDistance} m of the centre landblock's middle (96, 96)");
+            }
+
+            Vector3 towards = context.RequirePoint3(pointer, "towards", $"{path}.towards");
+            if (towards == from)
+            {
+                throw context.Error($"{path}.towards", pointer.GetProperty("towards"), "must differ from \"from\" (it gives the ray's direction)");
+            }
+
+            pointers.Add(new ScenePointer(name, (int)leg, from, towards));
+        }
+
+        return pointers;
     }
 
     /// <summary><c>"effects"</c>: <c>"literal"</c>, <c>"player"</c> (with the player's body), or an object naming each effect.</summary>
@@ -426,6 +479,18 @@ internal static class SceneReader
             }
 
             return new Vector2(value[0].GetSingle(), value[1].GetSingle());
+        }
+
+        public Vector3 RequirePoint3(JsonElement parent, string name, string path)
+        {
+            JsonElement value = Require(parent, name, path);
+            if (value.ValueKind != JsonValueKind.Array || value.GetArrayLength() != 3
+                || value.EnumerateArray().Any(v => v.ValueKind != JsonValueKind.Number || !float.IsFinite(v.GetSingle())))
+            {
+                throw Error(path, value, "must be [x, y, z], three numbers in metres");
+            }
+
+            return new Vector3(value[0].GetSingle(), value[1].GetSingle(), value[2].GetSingle());
         }
 
         public bool OptionalBool(JsonElement parent, string name, string path)

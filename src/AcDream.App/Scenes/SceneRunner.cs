@@ -18,7 +18,9 @@ namespace AcDream.App.Scenes;
 /// the player's move, then each creature's, each resolved by the engine with its own id against the movers as committed
 /// at the frame's start; a creature whose answer ends inside a mover that has already moved this frame (the player, or
 /// a creature before it) stays where it was for the frame (<see cref="Creature.HoldBack"/>). Then every mover is moved
-/// to where it ended, for the next frame's commit.
+/// to where it ended, for the next frame's commit. After the player's move a chase camera (<see cref="ChaseCamera"/>)
+/// places its eye behind the player (<see cref="FrameSample.Camera"/>; at the start too), and after a leg's last frame
+/// the scene's pointer rays for that leg are cast (<see cref="Pointer"/>, <see cref="WalkRecord.Pointers"/>).
 /// </remarks>
 internal static class SceneRunner
 {
@@ -57,6 +59,7 @@ internal static class SceneRunner
         var drops = new List<Drop>();
         var touches = new List<MoverTouch>();
         var doorChanges = new List<DoorChange>();
+        var pointers = new List<PointerResult>();
         var creatures = (scene.Creatures ?? []).Select((c, i) => new Creature(FirstCreatureId + (uint)i, c)).ToList();
         var doors = (scene.Doors ?? []).Select(name => world.Doors[name]).ToList();
         var doorsIn = new HashSet<uint>(); // the doors registered now
@@ -88,7 +91,9 @@ internal static class SceneRunner
         window.AddMover(PlayerId, MoverShape.Cylinder(playerBody.Radius, playerBody.Height), start.Position, start.CellId, Facing(mode.Heading), MoverState.Player);
         window.CommitMovers();
         RecordDoors();
-        samples.Add(new FrameSample(0, start.Position, start.CellId, start.IsOnGround, null));
+        var camera = new ChaseCamera(engine, PlayerId);
+        var pointer = new Pointer(engine, PlayerId);
+        samples.Add(new FrameSample(0, start.Position, start.CellId, start.IsOnGround, null, Camera: camera.Update(mode.Position, mode.CellId, mode.Heading)));
 
         bool truncated = false;
         foreach (SceneLeg leg in scene.Legs)
@@ -168,7 +173,7 @@ internal static class SceneRunner
                 }
 
                 var sample = new FrameSample(frame, mode.Position, mode.CellId, mode.IsOnGround, moved.LastRefusal, slide,
-                    FloorObject(mode, moved), WallObject(moved, slide), moved);
+                    FloorObject(mode, moved), WallObject(moved, slide), moved, camera.Update(mode.Position, mode.CellId, mode.Heading));
                 air = (air.Jumps + moved.Jumps, air.HeadHits + moved.HeadHits, air.Landings + moved.Landings, air.EdgeSlides + moved.EdgeSlides);
                 if (before.IsOnGround && sample.IsOnGround && before.Position.Z - sample.Position.Z > PlayerMovementMode.StepUpHeight)
                 {
@@ -183,6 +188,11 @@ internal static class SceneRunner
             {
                 break;
             }
+
+            foreach (ScenePointer ray in (scene.Pointers ?? []).Where(p => p.AfterLeg == legs.Count))
+            {
+                pointers.Add(new PointerResult(ray, frame, pointer.Cast(ray.From, 0u, ray.Towards - ray.From)));
+            }
         }
 
         return new WalkRecord(scene, samples, legs, streaming, drops, warnings, truncated)
@@ -190,6 +200,7 @@ internal static class SceneRunner
             Creatures = creatures.ConvertAll(c => c.Path()),
             Touches = touches,
             DoorChanges = doorChanges,
+            Pointers = pointers,
         };
 
         // A landblock loaded: its doors (closed) and the creatures whose home is in it appear.

@@ -13,7 +13,9 @@ namespace AcDream.App.Scenes;
 /// <param name="FloorObjectId">The object whose floor the mover stands on, as the engine reported it (<see cref="MoveReport.Floor"/>); 0 for the terrain or a cell's floor, or in the air.</param>
 /// <param name="WallObjectId">For a frame refused as Wall or OuterWall or slid along a wall: the object whose wall, shell or cylinder the engine reported it met (<see cref="MoveReport.Wall"/>); 0 otherwise or when it was a cell's wall.</param>
 /// <param name="Moved">What the frame's movement did as the engine reported it (jumps, head hits, landings, edge slides among it).</param>
-internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null, uint FloorObjectId = 0, uint WallObjectId = 0, Movement.MovementFrame Moved = default);
+/// <param name="Camera">Where the chase camera (<see cref="Movement.ChaseCamera"/>) put its eye after the frame's move.</param>
+internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null, uint FloorObjectId = 0, uint WallObjectId = 0, Movement.MovementFrame Moved = default,
+    Movement.CameraView Camera = default);
 
 /// <summary>How a leg ended.</summary>
 /// <param name="Leg">The leg.</param>
@@ -67,6 +69,9 @@ internal sealed record WalkRecord(
 
     /// <summary>The scene's doors' states: each door's state when registered, then each change, in frame order.</summary>
     public IReadOnlyList<DoorChange> DoorChanges { get; init; } = [];
+
+    /// <summary>The scene's pointer rays as cast, in the order cast.</summary>
+    public IReadOnlyList<PointerResult> Pointers { get; init; } = [];
 
     /// <summary>
     /// The closest two creatures' centres came, seen from above, after any frame, of two whose heights overlap (one
@@ -176,6 +181,9 @@ internal sealed record WalkRecord(
 /// <param name="MoverId">The mover's id.</param>
 /// <param name="Stopped">Whether it is the wall the engine reported stopping or sliding the player that frame (<see cref="MoveReport.Wall"/>, <see cref="SurfaceKind.Mover"/>).</param>
 internal readonly record struct MoverTouch(int Frame, uint MoverId, bool Stopped);
+
+/// <summary>A scene's pointer ray (<see cref="ScenePointer"/>) and what it met, cast after frame <paramref name="Frame"/>.</summary>
+internal readonly record struct PointerResult(ScenePointer Pointer, int Frame, Movement.PointerHit Hit);
 
 /// <summary>A door's state from frame <paramref name="Frame"/> on, as committed at that frame's start (what its moves met).</summary>
 internal readonly record struct DoorChange(int Frame, uint DoorId, DoorState State);

@@ -57,6 +57,8 @@ internal static class WalkReport
         }
 
         text.AppendLine();
+        AddCamera(text, record);
+        AddPointers(text, record);
         Line($"Refused moves: {string.Join(", ", Refusals.Select(o => $"{record.RefusalCount(o)} {Describe(o)}"))}.");
         int wallSlides = record.Samples.Count(s => s.Slide is Vector3 n && IsWall(n));
         Line($"Slid moves: {wallSlides} along walls, {record.SlideCount - wallSlides} along slopes' contours.");
@@ -106,6 +108,87 @@ internal static class WalkReport
         Line($"SVG: {svgPath}");
         return text.ToString();
     }
+
+    /// <summary>
+    /// The chase camera (<see cref="ChaseCamera"/>, <see cref="FrameSample.Camera"/>) over the walk's frames (the start
+    /// left out): how often its boom was pulled in, by how much at most, slid or boxed in, and with the player indoors
+    /// how often its eye was outdoors; then, per leg that pulled it in, its frames (how many, first and last), by how
+    /// much at most, and what the boom met, by kind.
+    /// </summary>
+    private static void AddCamera(StringBuilder text, WalkRecord record)
+    {
+        void Line(FormattableString line) => text.AppendLine(line.ToString(CultureInfo.InvariantCulture));
+        FrameSample[] frames = [.. record.Samples.Where(s => s.Frame > 0)];
+        FrameSample[] pulled = [.. frames.Where(s => s.Camera.PulledIn)];
+        string most = "";
+        if (pulled.Length > 0)
+        {
+            FrameSample worst = pulled.MaxBy(s => s.Camera.PulledInBy);
+            int leg = LegOf(record, worst.Frame);
+            most = string.Create(CultureInfo.InvariantCulture, $", by at most {worst.Camera.PulledInBy:F2} m (frame {worst.Frame}{(leg > 0 ? $", leg {leg}" : "")})");
+        }
+
+        int outdoors = frames.Count(s => CellIds.IsIndoor(s.CellId) && !CellIds.IsIndoor(s.Camera.EyeCellId));
+        Line($"Camera: a chase camera (a {ChaseCamera.ViewerRadius} m sphere on a boom from a pivot {ChaseCamera.PivotHeight} m above the feet, {ChaseCamera.BoomBack} m back and {ChaseCamera.BoomUp} m up, {ChaseCamera.BoomLength:F2} m, at least {ChaseCamera.MinBoom} m; passing creatures, the player and open doors): pulled in at {FrameCount(pulled.Length)} of {frames.Length}{most}; slid along what it met at {FrameCount(frames.Count(s => s.Camera.Slid))}; boxed in at {FrameCount(frames.Count(s => s.Camera.Overlapping))}; eye outdoors with the player indoors at {FrameCount(outdoors)}.");
+        if (pulled.Length == 0)
+        {
+            return;
+        }
+
+        Line($"Camera pulled in, per leg (the other legs: never):");
+        int number = 1;
+        foreach (LegResult leg in record.Legs)
+        {
+            FrameSample[] inLeg = [.. pulled.Where(s => s.Frame >= leg.FirstFrame && s.Frame <= leg.LastFrame)];
+            if (inLeg.Length > 0)
+            {
+                string met = string.Join(", ", inLeg.GroupBy(s => (s.Camera.Met, s.Camera.MetId)).OrderByDescending(g => g.Count())
+                    .Select(g => string.Create(CultureInfo.InvariantCulture, $"{g.Count()} × {Describe(g.Key.Met)} 0x{g.Key.MetId:X8}{Named(record, g.Key.Met, g.Key.MetId)}")));
+                Line($"  leg {number}: {FrameCount(inLeg.Length)} (frames {inLeg[0].Frame}-{inLeg[^1].Frame}), by at most {inLeg.Max(s => s.Camera.PulledInBy):F2} m; met {met}");
+            }
+
+            number++;
+        }
+    }
+
+    /// <summary>The scene's pointer rays (<see cref="Pointer"/>, <see cref="WalkRecord.Pointers"/>): each one's start, direction and what it met.</summary>
+    private static void AddPointers(StringBuilder text, WalkRecord record)
+    {
+        void Line(FormattableString line) => text.AppendLine(line.ToString(CultureInfo.InvariantCulture));
+        if (record.Pointers.Count == 0)
+        {
+            return;
+        }
+
+        Line($"Pointer rays (radius 0, at most {Pointer.MaxLength} m, stopping at everything but the player):");
+        foreach ((ScenePointer ray, int frame, PointerHit hit) in record.Pointers)
+        {
+            string what = hit.Hit
+                ? string.Create(CultureInfo.InvariantCulture, $"{Describe(hit.Kind)} 0x{hit.Id:X8}{Named(record, hit.Kind, hit.Id)} at ({hit.Point.X:F2}, {hit.Point.Y:F2}, {hit.Point.Z:F2}), {hit.Distance:F2} m, in cell 0x{hit.CellId:X8}")
+                : "nothing";
+            Line($"  {ray.Name} (after leg {ray.AfterLeg}, frame {frame}): from ({ray.From.X:F2}, {ray.From.Y:F2}, {ray.From.Z:F2}) towards ({ray.Towards.X:F2}, {ray.Towards.Y:F2}, {ray.Towards.Z:F2}): {what}.");
+        }
+    }
+
+    /// <summary>" (name)" for what a cast met: a mover's (<see cref="MoverName"/>), or an object's or a Holtburg cell's the host names; else empty.</summary>
+    private static string Named(WalkRecord record, SurfaceKind kind, uint id) =>
+        (kind == SurfaceKind.Mover ? MoverName(record, id) : HoltburgWorld.ObjectName(id) ?? HoltburgWorld.CellName(id)) is string name ? $" ({name})" : "";
+
+    /// <summary>Short text for a kind of surface a cast met.</summary>
+    public static string Describe(SurfaceKind kind) => kind switch
+    {
+        SurfaceKind.Terrain => "terrain",
+        SurfaceKind.CellFloor => "cell floor",
+        SurfaceKind.CellWall => "cell wall",
+        SurfaceKind.CellCeiling => "cell ceiling",
+        SurfaceKind.ObjectFloor => "object floor",
+        SurfaceKind.ObjectWall => "object wall",
+        SurfaceKind.BuildingShell => "building shell",
+        SurfaceKind.Cylinder => "cylinder",
+        SurfaceKind.FloorEdge => "floor edge",
+        SurfaceKind.Mover => "mover",
+        _ => "land not loaded",
+    };
 
     /// <summary>
     /// The objects: the sets the scene registered and how many objects each landblock got, then the

@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Numerics;
 using System.Text;
 using System.Xml.Linq;
+using AcDream.App.Movement;
 using AcDream.App.World;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;
@@ -11,7 +12,8 @@ namespace AcDream.App.Scenes;
 /// <summary>
 /// Draws a walk as SVG: a top-down map (terrain contours every 2 m, the Holtburg floor plans, the
 /// route coloured by cell, refused moves as red rings, and, with a body, the body's clearance where
-/// it touched a wall; the scene's doors and its creatures' paths) and a side profile of Z over the frames.
+/// it touched a wall; the scene's doors and its creatures' paths; the chase camera's eye) and a side profile of Z over
+/// the frames (the feet's and the eye's).
 /// </summary>
 internal static partial class WalkSvg
 {
@@ -32,6 +34,12 @@ internal static partial class WalkSvg
 
     /// <summary>Colour of the doors' slabs: dark orange.</summary>
     private const string DoorColour = "#e65100";
+
+    /// <summary>Colour of the chase camera's eye: cyan, apart from the route's cell colours and greys, the objects' purple, the creatures' brown and the blue circles.</summary>
+    private const string EyeColour = "#00acc1";
+
+    /// <summary>The eye's path is drawn through points at least this far apart, metres (and its last).</summary>
+    private const float EyePathSpacing = 0.1f;
 
     /// <summary>A creature's path is drawn through points at least this far apart, metres (and its last), so a long walk stays a light line.</summary>
     private const float CreaturePathSpacing = 0.25f;
@@ -65,6 +73,7 @@ internal static partial class WalkSvg
         AddObjects(map, world, frame, scale, Map);
         AddDoors(map, record, world, Map);
         AddCreatures(map, record, scale, Map);
+        map.Add(EyePath(samples, s => Map(s.Camera.Eye.X, s.Camera.Eye.Y), s => new Vector2(s.Camera.Eye.X, s.Camera.Eye.Y)));
         AddRoute(map, samples, colours, s => Map(s.Position.X, s.Position.Y));
         foreach (Vector2 p in samples.Where(s => s.Refusal is not null).Select(s => Map(s.Position.X, s.Position.Y)).Distinct())
         {
@@ -84,7 +93,7 @@ internal static partial class WalkSvg
 
         // Profile: Z over frames.
         float profileTop = mapTop + mapHeight + 60f;
-        float minZ = samples.Min(s => s.Position.Z) - 1f, maxZ = samples.Max(s => s.Position.Z) + 1f;
+        float minZ = samples.Min(s => MathF.Min(s.Position.Z, s.Camera.Eye.Z)) - 1f, maxZ = samples.Max(s => MathF.Max(s.Position.Z, s.Camera.Eye.Z)) + 1f;
         int frames = Math.Max(1, record.Final.Frame);
         Vector2 Profile(int frame, float z) => new(Margin + (frame * (Width - (2 * Margin)) / frames), profileTop + ((maxZ - z) * ProfileHeight / (maxZ - minZ)));
         var profile = new XElement(Svg + "g", new XAttribute("id", "profile"));
@@ -103,8 +112,9 @@ internal static partial class WalkSvg
             profile.Add(Line(a, b, "#ccc", 0.5f));
         }
 
+        profile.Add(EyePath(samples, s => Profile(s.Frame, s.Camera.Eye.Z), null));
         AddRoute(profile, samples, colours, s => Profile(s.Frame, s.Position.Z));
-        profile.Add(Label(Margin, profileTop - 8, Invariant($"Z (m) over frames 0..{frames} at {SceneRunner.FramesPerSecond} Hz; grey lines: leg starts"), 13));
+        profile.Add(Label(Margin, profileTop - 8, Invariant($"Z (m) over frames 0..{frames} at {SceneRunner.FramesPerSecond} Hz; grey lines: leg starts; cyan: the camera's eye"), 13));
 
         // Legend: indoor cells.
         float legendTop = profileTop + ProfileHeight + 30f;
@@ -146,6 +156,9 @@ internal static partial class WalkSvg
             legend.Add(Label(Margin + 14, ly, Invariant($"creatures ({record.Creatures.Count}): each one's path, and its body (radius {MoverBody.Player.Radius} m) where it ended"), 11));
         }
 
+        ly += 18f;
+        legend.Add(new XElement(Svg + "line", Attr("x1", Margin), Attr("y1", ly - 4), Attr("x2", Margin + 10), Attr("y2", ly - 4), new XAttribute("stroke", EyeColour), Attr("stroke-width", 1.5f)));
+        legend.Add(Label(Margin + 14, ly, Invariant($"the chase camera's eye ({ChaseCamera.ViewerRadius} m sphere), beside the player's route: its path on the map, its Z in the profile"), 11));
         ly += 18f;
         legend.Add(new XElement(Svg + "circle", Attr("cx", Margin + 5), Attr("cy", ly - 4), Attr("r", 4f), new XAttribute("fill", "none"), new XAttribute("stroke", "#d00"), Attr("stroke-width", 1.5f)));
         legend.Add(Label(Margin + 14, ly, "refused move (the engine's outcome; the summary names it)", 11));
@@ -193,6 +206,32 @@ internal static partial class WalkSvg
         }
 
         return group;
+    }
+
+    /// <summary>
+    /// The chase camera's eye (<see cref="FrameSample.Camera"/>) in <see cref="EyeColour"/>: one line through the frames'
+    /// eyes, titled with the frames pulled in: on the map through those at least <see cref="EyePathSpacing"/> apart
+    /// (<paramref name="ground"/>: where each is, metres) and the last; with no <paramref name="ground"/>, through every frame's.
+    /// </summary>
+    private static XElement EyePath(IReadOnlyList<FrameSample> samples, Func<FrameSample, Vector2> place, Func<FrameSample, Vector2>? ground)
+    {
+        var points = new StringBuilder();
+        Vector2? last = null;
+        for (int i = 0; i < samples.Count; i++)
+        {
+            Vector2 at = ground?.Invoke(samples[i]) ?? default;
+            if (ground is null || last is not Vector2 previous || Vector2.Distance(at, previous) >= EyePathSpacing || i == samples.Count - 1)
+            {
+                Vector2 p = place(samples[i]);
+                points.Append(Invariant($"{p.X:0.##},{p.Y:0.##} "));
+                last = at;
+            }
+        }
+
+        int pulled = samples.Count(s => s.Camera.PulledIn);
+        return new XElement(Svg + "polyline", new XAttribute("class", "camera-eye"), new XAttribute("points", points.ToString().TrimEnd()),
+            new XAttribute("fill", "none"), new XAttribute("stroke", EyeColour), Attr("stroke-width", 1f), Attr("stroke-opacity", 0.8f),
+            new XElement(Svg + "title", Invariant($"the chase camera's eye: {samples.Count} frames, pulled in at {pulled}")));
     }
 
     /// <summary>Indoor cells get distinct hues in order of first visit; outdoor cells alternate two greys.</summary>

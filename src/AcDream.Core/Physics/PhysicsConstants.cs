@@ -226,4 +226,28 @@ public static class PhysicsConstants
     /// held, 0.241 m is not).
     /// </summary>
     public const float SupportReach = 0.5f;
+
+    /// <summary>
+    /// Cast (<see cref="PhysicsEngine.Cast"/>): how far outside a polygon's edges, metres, its face still stops a ray or
+    /// sphere: 1 µm. Two polygons sharing an edge then leave no gap for a ray whose touch point rounds off both (double
+    /// rounding of the inside test is about 1e-13 m in a landblock), and a point this far off an edge is well within
+    /// the 0.1 mm to which a contact is promised.
+    /// </summary>
+    internal const double CastEdgeTolerance = 1e-6;
+
+    /// <summary>
+    /// Cast: how near, metres, a sphere advancing on a cylinder's rim must come to count as touching it (1 nm), and how
+    /// many advances it gets (64): each advance moves it by its distance to the rim circle, which never overshoots; a
+    /// graze that has not closed to this by then passes.
+    /// </summary>
+    internal const double CastRimTolerance = 1e-9;
+
+    /// <inheritdoc cref="CastRimTolerance"/>
+    internal const int CastRimAdvances = 64;
+
+    /// <summary>
+    /// Cast: margin, metres, by which the box of a stretch of the path (grown by the radius) is grown again before the
+    /// grids and bounds are asked about it, so rounding it to floats never leaves a shape out: 1 mm.
+    /// </summary>
+    internal const double CastBoxMargin = 1e-3;
 }

@@ -25,7 +25,7 @@ public sealed partial class PhysicsEngine
     /// Outdoors the sphere meets the terrain, outdoor objects (buildings by their shells) and the walls of buildings'
     /// cells; its centre passing in through a doorway goes on in that cell. In a cell it meets the cell's and its
     /// portal neighbours' polygons and objects (and, near a door, what stands outside the door); its centre passing out
-    /// through a portal goes on beyond it. The movers committed last (<see cref="Movers"/>) are met by their walls, as
+    /// through a portal goes on beyond it. A start exactly on a surface moving off it (a ray up from the feet) is free of it. The movers committed last (<see cref="Movers"/>) are met by their walls, as
     /// <paramref name="options"/> filters them; a mover whose walls lie more than a landblock from the start is not.
     /// The cast reads each landblock once, allocates nothing, and never changes the engine.
     /// </para>
@@ -37,7 +37,7 @@ public sealed partial class PhysicsEngine
     /// </para>
     /// </remarks>
     /// <param name="from">The sphere's centre at the start, world metres.</param>
-    /// <param name="fromCellId">The cell it is in (<c>0xXXYYCCCC</c>; an outdoor number, 0 included, is recomputed from the position).</param>
+    /// <param name="fromCellId">The cell that holds <paramref name="from"/> (<c>0xXXYYCCCC</c>; an outdoor number, 0 included, is recomputed from the position). Not always the cell <c>Resolve</c> names for a mover whose start is above its feet: a body in the air over a floor opening is in the cell below, a pivot over its head may be in the cell above; cast from the feet to such a point first to find its cell.</param>
     /// <param name="to">The centre's end, world metres.</param>
     /// <param name="options">The radius (metres, ≥ 0) and filters.</param>
     /// <exception cref="ArgumentException">A position is not finite, the radius is negative or not finite, the cell id is not a cell of the world, or an indoor cell is not in its loaded landblock.</exception>

@@ -42,4 +42,22 @@ public class CastSmokeTests
             hit.Fraction.Should().BeLessThan(0.2f, $"{frame}: {hit}");
         }
     }
+
+    [Fact]
+    public void A_cast_starting_on_the_ground_or_a_floor_and_moving_up_meets_nothing_there()
+    {
+        foreach (string frame in new[] { "global", "centred" })
+        {
+            PhysicsEngine engine = RealObjects.HoltburgWithCellarStairs(frame);
+            Vector3 o = engine.GetLandblockOrigin(TestData.Holtburg);
+            foreach (float radius in new[] { 0f, 0.3f })
+            {
+                CastHit terrain = engine.Cast(o + new Vector3(120, 0, 94), 0, o + new Vector3(120, 0, 95.5f), new CastOptions(radius));
+                CastHit floor = engine.Cast(o + new Vector3(139, 10, 94), 0xA9B40143u, o + new Vector3(139, 10, 95.5f), new CastOptions(radius));
+                terrain.Hit.Should().BeFalse($"{frame}, r {radius}: {terrain}");
+                floor.Hit.Should().BeFalse($"{frame}, r {radius}: {floor}");
+                floor.CellId.Should().Be(0xA9B40143u, $"{frame}, r {radius}: {floor}");
+            }
+        }
+    }
 }

@@ -21,6 +21,8 @@ public class DeterminismWalkTests(ITestOutputHelper output)
         first.Slid.Should().BeGreaterThan(first.Answers / 10, $"{first}");
         first.OnObjects.Should().BeGreaterThan(first.Answers / 20, $"{first}");
         first.Refused.Should().BeGreaterThan(0, $"{first}");
+        first.CameraHits.Should().BeGreaterThan(first.Answers / 40, $"{first}: the camera's casts meet walls and objects");
+        first.RayHits.Should().BeGreaterThan(first.Answers / 2, $"{first}: the rays meet the ground ahead");
     }
 
     /// <summary>Vector Lerp and multiply-add round once where the processor fuses them and twice where it does not.</summary>

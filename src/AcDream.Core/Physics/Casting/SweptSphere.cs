@@ -38,9 +38,6 @@ internal readonly record struct D3(double X, double Y, double Z)
 /// </remarks>
 internal struct SweptSphere
 {
-    /// <summary>How far outside a polygon's edges (metres) its face still counts: shared edges of two polygons leave no gap.</summary>
-    private const double InsideTolerance = 1e-6;
-
     public SweptSphere(D3 start, D3 move, double radius)
     {
         (Start, Move, Radius, T) = (start, move, radius, double.PositiveInfinity);
@@ -70,6 +67,9 @@ internal struct SweptSphere
 
     /// <summary>The centre at fraction t, in the cast's frame.</summary>
     public readonly D3 At(double t) => Start + (Move * t);
+
+    /// <summary>Forgets every contact found (a centre passing in through a doorway: what lay beyond it outdoors is behind the cell's own walls).</summary>
+    public void Forget() => (T, Kind, Id) = (double.PositiveInfinity, SurfaceKind.None, 0);
 
     /// <summary>Ends the cast at <paramref name="t"/> when nothing was met before it (a portal to a cell not loaded, land not loaded).</summary>
     public void Stop(double t, D3 normal, SurfaceKind kind, uint id) => Keep(t, normal, kind, id);
@@ -110,7 +110,7 @@ internal struct SweptSphere
         var c = new D3(cx / v.Length, cy / v.Length, cz / v.Length);
         double s0 = -D3.Dot(n, c); // the start's signed distance from the plane
         double rate = D3.Dot(n, Move);
-        double side = s0 > 0 || (s0 == 0 && rate < 0) ? 1.0 : -1.0;
+        double side = s0 > 0 || (s0 == 0 && rate > 0) ? 1.0 : -1.0; // a start on the plane is on the side it moves to: away
         if (side * rate < 0)
         {
             // Approaching the plane: the face is met when the centre is a radius from it.
@@ -136,7 +136,7 @@ internal struct SweptSphere
         }
     }
 
-    /// <summary>Whether <paramref name="p"/>, on the plane of the convex polygon <paramref name="v"/> (normal <paramref name="n"/>), is inside it or within <see cref="InsideTolerance"/> of its edges.</summary>
+    /// <summary>Whether <paramref name="p"/>, on the plane of the convex polygon <paramref name="v"/> (normal <paramref name="n"/>), is inside it or within <see cref="PhysicsConstants.CastEdgeTolerance"/> of its edges.</summary>
     private static bool Inside(ReadOnlySpan<D3> v, D3 n, D3 p)
     {
         for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
@@ -144,7 +144,7 @@ internal struct SweptSphere
             D3 e = v[i] - v[j];
             D3 inward = D3.Cross(n, e);
             double el = e.Length;
-            if (el > 0 && D3.Dot(p - v[j], inward) < -InsideTolerance * el)
+            if (el > 0 && D3.Dot(p - v[j], inward) < -PhysicsConstants.CastEdgeTolerance * el)
             {
                 return false;
             }
@@ -270,9 +270,10 @@ internal struct SweptSphere
             }
         }
 
-        // The caps: the centre a radius above the top (or below the bottom) within the cylinder's radius.
-        Cap(axisX, axisY, radius, z1 + Radius, dz < 0 && z1 + Radius <= 0, 1.0, kind, id);
-        Cap(axisX, axisY, radius, z0 - Radius, dz > 0 && z0 - Radius >= 0, -1.0, kind, id);
+        // The caps: the centre a radius above the top (or below the bottom) within the cylinder's radius, approached from
+        // above it (below it); a centre already within the radius of the cap is met at once.
+        Cap(axisX, axisY, radius, z1 + Radius, dz < 0 && z1 < 0, 1.0, kind, id);
+        Cap(axisX, axisY, radius, z0 - Radius, dz > 0 && z0 > 0, -1.0, kind, id);
 
         if (Radius > 0)
         {
@@ -288,7 +289,7 @@ internal struct SweptSphere
             return;
         }
 
-        double t = planeZ / Move.Z;
+        double t = Math.Max(planeZ / Move.Z, 0.0);
         if (!(t < T) || t > 1.0)
         {
             return;
@@ -305,7 +306,8 @@ internal struct SweptSphere
     /// The rim circle at <paramref name="z"/> (the top's, <paramref name="up"/> 1, or the bottom's, −1): where the sphere
     /// first comes within its radius of the circle while beyond the cap and outside the side (the side and caps answer
     /// elsewhere). Found by advancing the sphere by its distance to the circle (a distance never overshoots), at most
-    /// 64 times; a graze that has not closed to 1e-9 m by then is a miss.
+    /// <see cref="PhysicsConstants.CastRimAdvances"/> times; a graze that has not closed to
+    /// <see cref="PhysicsConstants.CastRimTolerance"/> by then is a miss.
     /// </summary>
     private void Rim(double axisX, double axisY, double radius, double z, double up, SurfaceKind kind, uint id)
     {
@@ -317,22 +319,20 @@ internal struct SweptSphere
 
         double t = 0;
         double limit = Math.Min(T, 1.0);
-        for (int i = 0; i < 64 && t <= limit; i++)
+        for (int i = 0; i < PhysicsConstants.CastRimAdvances && t <= limit; i++)
         {
             D3 centre = Move * t;
             double hx = centre.X - axisX, hy = centre.Y - axisY, rho = Math.Sqrt((hx * hx) + (hy * hy));
             double gap = Math.Sqrt(((rho - radius) * (rho - radius)) + ((centre.Z - z) * (centre.Z - z))) - Radius;
-            if (gap <= 1e-9)
+            if (gap <= PhysicsConstants.CastRimTolerance)
             {
-                if (i == 0 && gap < -1e-9)
+                // Touching (or, at the start, overlapping) the rim beyond the cap and outside the side: met when moving
+                // towards the circle (an overlap left behind is free).
+                double k = rho > 0 ? radius / rho : 0;
+                var away = new D3(hx - (hx * k), hy - (hy * k), centre.Z - z);
+                if ((centre.Z - z) * up > 0 && rho > radius && (i > 0 || D3.Dot(away, Move) < 0))
                 {
-                    return; // overlapping at the start: the side and caps decide
-                }
-
-                if ((centre.Z - z) * up > 0 && rho > radius)
-                {
-                    double k = rho > 0 ? radius / rho : 0;
-                    Keep(t, Towards(new D3(hx - (hx * k), hy - (hy * k), centre.Z - z)), kind, id);
+                    Keep(t, Towards(away), kind, id);
                 }
 
                 return;

@@ -209,6 +209,9 @@ internal static class WorldCast
                 double door = Doorway(in ray, entry, offset, cx - ((lx - _x0) * PhysicsConstants.CellsPerSide), cy - ((ly - _y0) * PhysicsConstants.CellsPerSide), t0, t1, out int cell);
                 if (door < ray.T && door <= t1)
                 {
+                    // In through a doorway: every contact found is later than it, and what the centre meets from here is the
+                    // building's (the terrain under a floor, a wall's outer face from inside, are not met indoors).
+                    ray.Forget();
                     (piece.Entry, piece.Cell, piece.From) = (entry, cell, door);
                     return;
                 }
@@ -245,11 +248,6 @@ internal static class WorldCast
 
         private void Object(ref SweptSphere ray, ObjectSurface o, D3 offset, in Box box)
         {
-            if (o.ObjectId == _options.IgnoreId && _options.IgnoreId != 0)
-            {
-                return;
-            }
-
             Vector3 lo = o.BoundsMin, hi = o.BoundsMax;
             if (!box.Meets(new Vector2(lo.X, lo.Y), new Vector2(hi.X, hi.Y), lo.Z, hi.Z))
             {
@@ -522,7 +520,7 @@ internal static class WorldCast
         public static Box Of(in SweptSphere ray, double t0, double t1, D3 offset)
         {
             D3 a = ray.At(t0) - offset, b = ray.At(t1) - offset;
-            double grow = ray.Radius + 1e-3;
+            double grow = ray.Radius + PhysicsConstants.CastBoxMargin;
             return new Box(
                 new Vector2((float)(Math.Min(a.X, b.X) - grow), (float)(Math.Min(a.Y, b.Y) - grow)),
                 new Vector2((float)(Math.Max(a.X, b.X) + grow), (float)(Math.Max(a.Y, b.Y) + grow)),

@@ -2,26 +2,6 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics;
 
-/// <summary>What a cast (<see cref="PhysicsEngine.Cast"/>) passes through; flags may be combined.</summary>
-[Flags]
-public enum CastFilter : byte
-{
-    /// <summary>It stops at everything: terrain, cells, objects and every registered mover, Ethereal or not (a pointer's ray).</summary>
-    None = 0,
-
-    /// <summary>It passes creatures and players (a camera's).</summary>
-    IgnoreCreatures = 1,
-
-    /// <summary>It stops only at solid things: movers that are Ethereal (an open door, a spell's swirl) are passed.</summary>
-    SolidOnly = 2,
-}
-
-/// <summary>The shape and filters of a cast.</summary>
-/// <param name="Radius">The sphere's radius, metres, ≥ 0; 0 is a ray.</param>
-/// <param name="Filter">What it passes.</param>
-/// <param name="IgnoreId">A mover id or an object's GfxObj/Setup id it passes (the player itself); 0: none.</param>
-public readonly record struct CastOptions(float Radius, CastFilter Filter = CastFilter.None, uint IgnoreId = 0);
-
 /// <summary>
 /// The answer of a cast: the first contact of the sphere along its segment, or its end when it met nothing.
 /// </summary>
