@@ -193,4 +193,67 @@ public class CastDoorwayTests(ITestOutputHelper output)
 
         output.WriteLine($"{(cell ? "cell" : "object")}: {worst}");
     }
+
+    [Theory]
+    [MemberData(nameof(CastWorlds.Frames), MemberType = typeof(CastWorlds))]
+    public void Casts_from_the_yard_in_through_the_west_doorway_meet_what_is_inside(string frame)
+    {
+        // Rays and spheres from the yard through the west doorway (its opening at x 136.3, y 4.2–6.1, z 94–96.5) into the
+        // cottage. Outdoors they meet the outdoors (the ground, the shells, the cells' walls); once the centre has passed
+        // in, the building (its cells and the cellar stair, not the ground under its floors or its shell's inner faces).
+        CastScene outdoors = CastWorlds.HoltburgOutdoors(frame);
+        CastScene inside = CastWorlds.Holtburg(frame, terrain: false, shells: false);
+        V3[] doorway = CastWorlds.HoltburgPortals().Single(p => p.Cell == ObjectPlacements.CottageWestDoorCell && p.Other == 0xFFFF).Polygon;
+        var random = new Random(52);
+        var worst = new Deviations(frame);
+        var cells = new Dictionary<uint, int>();
+        for (int n = 0; n < 300; n++)
+        {
+            float r = n % 3 == 0 ? 0f : n % 3 == 1 ? 0.1f : 0.3f;
+            var opening = new V3(136.3, 4.2 + r + 0.01 + (random.NextDouble() * (1.9 - (2 * r) - 0.02)), 94 + r + 0.01 + (random.NextDouble() * (2.5 - (2 * r) - 0.02)));
+            var start = new V3(128 + (random.NextDouble() * 6), opening.Y + ((random.NextDouble() - 0.5) * 6), 94 + r + 0.05 + (random.NextDouble() * 3));
+            V3 end = opening + ((opening - start) * (1.5 * random.NextDouble() * 6 / (opening - start).Length));
+            Vector3 from = outdoors.World(start), to = outdoors.World(end);
+            V3 a = outdoors.Local(from), b = outdoors.Local(to);
+            if (outdoors.Clearance(a) < r + 0.01 || CastWorlds.Crossing(doorway, a, b) is not double enter)
+            {
+                continue;
+            }
+
+            // The outdoors up to where the centre passes in, the building after.
+            V3 door = a + ((b - a) * enter);
+            Hit? expected = outdoors.Reference.Cast(a, door, r) is Hit before
+                ? before with { T = before.T * enter }
+                : inside.Reference.Cast(door, b, r) is Hit after ? after with { T = enter + (after.T * (1 - enter)) } : null;
+            CastHit hit = outdoors.Engine.Cast(from, 0, to, new CastOptions(r));
+            outdoors.Tally(hit, expected, from, to, r, worst, $"cast {n} in through the doorway at {opening}");
+            cells[hit.CellId] = cells.GetValueOrDefault(hit.CellId) + 1;
+        }
+
+        output.WriteLine($"{worst}; ended in: {string.Join(", ", cells.OrderBy(c => c.Key).Select(c => $"0x{c.Key:X8} {c.Value}"))}");
+        worst.Failures.Should().BeEmpty(worst.FailureReport());
+        cells.GetValueOrDefault(0xA9B40143u).Should().BeGreaterThan(50, "most go on into the main room");
+    }
+
+    [Theory]
+    [MemberData(nameof(CastWorlds.Frames), MemberType = typeof(CastWorlds))]
+    public void A_ray_in_through_the_doorway_meets_the_stairwell_as_the_same_ray_started_inside_does(string frame)
+    {
+        // One line from the yard in through the west doorway, across the main room and down the stairwell hole
+        // (x 140.5–142.1, y 3.9–8.7 at z 94) to 0x0146's east wall. Started in the yard or in the main room, the cast meets
+        // what the building has there: the stairwell's wall (the cottage shell's base, at z 94 under the house, is the
+        // outdoors' and not met indoors).
+        CastScene inside = CastWorlds.Holtburg(frame, terrain: false, shells: false);
+        var worst = new Deviations(frame);
+        V3 a = new(129.8707581, 3.8117917, 96.3480530), b = new(143.7759552, 7.3302140, 93.5131912);
+        Vector3 to = inside.World(b);
+        V3 roomStart = a + ((b - a) * 0.6); // x 138.2: in the main room
+        CastHit fromRoom = inside.Check(inside.World(roomStart), MainRoom, to, 0f, worst, "started in the main room");
+        (fromRoom.Kind, fromRoom.Id).Should().Be((SurfaceKind.CellWall, 0xA9B40146u), $"{fromRoom}");
+
+        CastHit fromYard = inside.Engine.Cast(inside.World(a), 0, to, new CastOptions(0f));
+        output.WriteLine($"[{frame}] from the room: {fromRoom}; from the yard: {fromYard}");
+        (fromYard.Kind, fromYard.Id, fromYard.CellId).Should().Be((fromRoom.Kind, fromRoom.Id, fromRoom.CellId), $"from the yard: {fromYard}; from the room: {fromRoom}");
+        (inside.Local(fromYard.Position) - inside.Local(fromRoom.Position)).Length.Should().BeLessThan(1e-4 + (2 * CastScene.HalfSpacing(fromRoom.Position)), $"from the yard: {fromYard}; from the room: {fromRoom}");
+    }
 }
