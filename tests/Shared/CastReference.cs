@@ -29,8 +29,8 @@ namespace AcDream.Testing;
 /// </para>
 /// <para>
 /// Coordinates are a frame of the caller's choosing (the tests use one landblock's local metres). The answer names the
-/// shape met and every other shape met within <see cref="TieTolerance"/> of it along the path (two polygons sharing an
-/// edge, a floor on the terrain), so a test can accept any of them, and the normals the contact may have.
+/// shape met first and every shape within <see cref="TieTolerance"/> of touching the sphere there (two polygons sharing
+/// an edge, a floor on the terrain), so a test can accept any of them, and the normals the contact may have.
 /// </para>
 /// </remarks>
 internal sealed class CastReference
@@ -44,7 +44,7 @@ internal sealed class CastReference
     /// <summary>The least advance of a sphere (metres of travel) while it closes on a shape.</summary>
     public const double MinStep = 1e-7;
 
-    /// <summary>Shapes met within this travel (metres) of the first are met together with it.</summary>
+    /// <summary>Shapes within this (metres) of touching the sphere at the contact are met together with the first; a ray's contact within this of a cylinder's rim may have the side's or the cap's normal.</summary>
     public const double TieTolerance = 1e-5;
 
     /// <summary>The game's walkable limit: a polygon whose unit normal Z is at least this is a floor.</summary>
@@ -111,7 +111,7 @@ internal sealed class CastReference
             }
         }
 
-        return new Hit(tFirst, centre, point, normals, first, together, Overlapping: tFirst == 0 && first.Distance(from) <= radius);
+        return new Hit(tFirst, centre, point, normals, first, together, Overlapping: tFirst == 0 && first.Distance(from) <= radius + (radius > 0 ? Touch : RayTouch));
     }
 
     /// <summary>
