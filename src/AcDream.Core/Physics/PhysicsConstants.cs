@@ -236,16 +236,6 @@ public static class PhysicsConstants
     internal const double CastEdgeTolerance = 1e-6;
 
     /// <summary>
-    /// Cast: how near, metres, a sphere advancing on a cylinder's rim must come to count as touching it (1 nm), and how
-    /// many advances it gets (64): each advance moves it by its distance to the rim circle, which never overshoots; a
-    /// graze that has not closed to this by then passes.
-    /// </summary>
-    internal const double CastRimTolerance = 1e-9;
-
-    /// <inheritdoc cref="CastRimTolerance"/>
-    internal const int CastRimAdvances = 64;
-
-    /// <summary>
     /// Cast: margin, metres, by which the box of a stretch of the path (grown by the radius) is grown again before the
     /// grids and bounds are asked about it, so rounding it to floats never leaves a shape out: 1 mm.
     /// </summary>

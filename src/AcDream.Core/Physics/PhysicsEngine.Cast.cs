@@ -15,7 +15,7 @@ public sealed partial class PhysicsEngine
     /// <remarks>
     /// <para>
     /// Positions are world metres; the contact is exact for the game's terrain triangles, polygons and cylinders
-    /// (closed form in double precision; a cylinder's rim, by a distance-bounded advance to 1e-9 m). Polygons are
+    /// (closed form in double precision; a cylinder's rim, by the exact roots of a quartic). Polygons are
     /// two-sided and a polygon's face counts within 1e-6 m of its edges, so nothing passes a surface of zero thickness
     /// or the seam between two. On the spec's bilinear terrain a ray is exact and a sphere meets the ground at its lowest
     /// point. A sphere that starts overlapping a surface and moves towards it is stopped at fraction 0; one moving away

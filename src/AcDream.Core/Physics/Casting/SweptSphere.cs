@@ -42,7 +42,11 @@ internal struct SweptSphere
     {
         (Start, Move, Radius, T) = (start, move, radius, double.PositiveInfinity);
         MoveSquared = D3.Dot(move, move);
+        (_from, _to) = (0.0, 1.0);
     }
+
+    /// <summary>The fractions within which a contact is kept (<see cref="Within"/>); 0..1 otherwise.</summary>
+    private double _from, _to;
 
     public D3 Start { get; }
 
@@ -68,6 +72,12 @@ internal struct SweptSphere
     /// <summary>The centre at fraction t, in the cast's frame.</summary>
     public readonly D3 At(double t) => Start + (Move * t);
 
+    /// <summary>Keeps only contacts from fraction <paramref name="from"/> to <paramref name="to"/> until <see cref="Everywhere"/>: shapes tested only for a stretch of the path.</summary>
+    public void Within(double from, double to) => (_from, _to) = (from, Math.Min(to, 1.0));
+
+    /// <summary>Keeps contacts anywhere along the path again.</summary>
+    public void Everywhere() => (_from, _to) = (0.0, 1.0);
+
     /// <summary>Forgets every contact found (a centre passing in through a doorway: what lay beyond it outdoors is behind the cell's own walls).</summary>
     public void Forget() => (T, Kind, Id) = (double.PositiveInfinity, SurfaceKind.None, 0);
 
@@ -77,7 +87,7 @@ internal struct SweptSphere
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void Keep(double t, D3 normal, SurfaceKind kind, uint id)
     {
-        if (t < T && t <= 1.0)
+        if (t < T && t <= _to && t >= _from)
         {
             (T, Normal, Kind, Id) = (Math.Max(t, 0.0), normal, kind, id);
         }
@@ -305,41 +315,160 @@ internal struct SweptSphere
     /// <summary>
     /// The rim circle at <paramref name="z"/> (the top's, <paramref name="up"/> 1, or the bottom's, −1): where the sphere
     /// first comes within its radius of the circle while beyond the cap and outside the side (the side and caps answer
-    /// elsewhere). Found by advancing the sphere by its distance to the circle (a distance never overshoots), at most
-    /// <see cref="PhysicsConstants.CastRimAdvances"/> times; a graze that has not closed to
-    /// <see cref="PhysicsConstants.CastRimTolerance"/> by then is a miss.
+    /// elsewhere). The centre is then on the torus about the circle: with ρ its distance from the axis and w its height
+    /// over the circle, (ρ − rc)² + w² = R², that is S = 2·rc·ρ with S = ρ² + w² + rc² − R², whose square
+    /// P = S² − 4·rc²·ρ² is a quartic in the fraction. Its roots are isolated exactly (<see cref="Roots"/>), so a sphere
+    /// that dips into the rim by any depth is met, at the first root where S ≥ 0.
     /// </summary>
     private void Rim(double axisX, double axisY, double radius, double z, double up, SurfaceKind kind, uint id)
     {
-        double length = Math.Sqrt(MoveSquared);
-        if (!(length > 0))
+        double limit = Math.Min(T, 1.0);
+        double reach = radius + Radius;
+        if (Math.Min(0, Move.Z * limit) > z + Radius || Math.Max(0, Move.Z * limit) < z - Radius
+            || Math.Min(0, Move.X * limit) > axisX + reach || Math.Max(0, Move.X * limit) < axisX - reach
+            || Math.Min(0, Move.Y * limit) > axisY + reach || Math.Max(0, Move.Y * limit) < axisY - reach)
         {
+            return; // the path's box misses the torus's
+        }
+
+        // ρ² = a2·t² + a1·t + a0; S = s2·t² + s1·t + s0.
+        double a2 = (Move.X * Move.X) + (Move.Y * Move.Y), a1 = -2 * ((Move.X * axisX) + (Move.Y * axisY)), a0 = (axisX * axisX) + (axisY * axisY);
+        double s2 = a2 + (Move.Z * Move.Z), s1 = a1 - (2 * Move.Z * z), s0 = a0 + (z * z) + (radius * radius) - (Radius * Radius);
+        double k = 4 * radius * radius;
+        Span<double> p = [(s0 * s0) - (k * a0), (2 * s1 * s0) - (k * a1), (s1 * s1) + (2 * s2 * s0) - (k * a2), 2 * s2 * s1, s2 * s2];
+        // Within the torus at the start: met at once when moving towards the circle, else free of it.
+        double w0 = -z, rho0 = Math.Sqrt(a0);
+        if ((((rho0 - radius) * (rho0 - radius)) + (w0 * w0)) < Radius * Radius)
+        {
+            double f0 = rho0 > 0 ? radius / rho0 : 0;
+            var away0 = new D3(-axisX + (axisX * f0), -axisY + (axisY * f0), w0);
+            if (w0 * up > 0 && rho0 > radius && D3.Dot(away0, Move) < 0)
+            {
+                Keep(0, Towards(away0), kind, id);
+            }
+
             return;
         }
 
-        double t = 0;
-        double limit = Math.Min(T, 1.0);
-        for (int i = 0; i < PhysicsConstants.CastRimAdvances && t <= limit; i++)
+        Span<double> roots = stackalloc double[4];
+        int count = Roots(p, 0, limit, roots);
+        for (int i = 0; i < count; i++)
         {
-            D3 centre = Move * t;
-            double hx = centre.X - axisX, hy = centre.Y - axisY, rho = Math.Sqrt((hx * hx) + (hy * hy));
-            double gap = Math.Sqrt(((rho - radius) * (rho - radius)) + ((centre.Z - z) * (centre.Z - z))) - Radius;
-            if (gap <= PhysicsConstants.CastRimTolerance)
+            double t = roots[i];
+            if ((s2 * t * t) + (s1 * t) + s0 < 0)
             {
-                // Touching (or, at the start, overlapping) the rim beyond the cap and outside the side: met when moving
-                // towards the circle (an overlap left behind is free).
-                double k = rho > 0 ? radius / rho : 0;
-                var away = new D3(hx - (hx * k), hy - (hy * k), centre.Z - z);
-                if ((centre.Z - z) * up > 0 && rho > radius && (i > 0 || D3.Dot(away, Move) < 0))
-                {
-                    Keep(t, Towards(away), kind, id);
-                }
-
-                return;
+                continue; // a root of the square only
             }
 
-            t += gap / length;
+            D3 centre = Move * t;
+            double hx = centre.X - axisX, hy = centre.Y - axisY, rho = Math.Sqrt((hx * hx) + (hy * hy));
+            double f = rho > 0 ? radius / rho : 0;
+            var away = new D3(hx - (hx * f), hy - (hy * f), centre.Z - z);
+            if ((centre.Z - z) * up > 0 && rho > radius)
+            {
+                Keep(t, Towards(away), kind, id);
+            }
+
+            return; // the first crossing of the torus: beyond it the side or a cap answers
         }
+    }
+
+    /// <summary>
+    /// The real roots in lo..hi of the polynomial with coefficients <paramref name="c"/> (constant first, degree at most
+    /// 4), ascending, into <paramref name="roots"/>; returns how many. The roots of its derivative (found the same way,
+    /// down to a line) split lo..hi into stretches where it is monotonic, and each sign change is bisected to the last
+    /// bit: exact, deterministic, and safe at double and near-double roots.
+    /// </summary>
+    internal static int Roots(ReadOnlySpan<double> c, double lo, double hi, Span<double> roots)
+    {
+        int n = c.Length - 1, count = 0;
+        if (n == 1)
+        {
+            if (c[1] != 0)
+            {
+                double r = -c[0] / c[1];
+                if (r >= lo && r <= hi)
+                {
+                    roots[count++] = r;
+                }
+            }
+
+            return count;
+        }
+
+        Span<double> d = stackalloc double[n];
+        for (int i = 0; i < n; i++)
+        {
+            d[i] = (i + 1) * c[i + 1];
+        }
+
+        Span<double> turns = stackalloc double[n - 1];
+        int m = Roots(d, lo, hi, turns);
+        double a = lo, fa = Eval(c, lo);
+        for (int j = 0; j <= m; j++)
+        {
+            double b = j < m ? turns[j] : hi, fb = Eval(c, b);
+            if (fa == 0)
+            {
+                if (count == 0 || roots[count - 1] != a)
+                {
+                    roots[count++] = a;
+                }
+            }
+            else if (fb != 0 && (fa < 0) != (fb < 0))
+            {
+                roots[count++] = Bisect(c, a, b, fa);
+            }
+
+            (a, fa) = (b, fb);
+        }
+
+        if (fa == 0 && (count == 0 || roots[count - 1] != a))
+        {
+            roots[count++] = a;
+        }
+
+        return count;
+    }
+
+    private static double Bisect(ReadOnlySpan<double> c, double a, double b, double fa)
+    {
+        for (int i = 0; i < 200; i++)
+        {
+            double mid = a + ((b - a) * 0.5);
+            if (mid <= a || mid >= b)
+            {
+                break; // the interval is one representable step
+            }
+
+            double fm = Eval(c, mid);
+            if (fm == 0)
+            {
+                return mid;
+            }
+
+            if ((fm < 0) == (fa < 0))
+            {
+                (a, fa) = (mid, fm);
+            }
+            else
+            {
+                b = mid;
+            }
+        }
+
+        return a;
+    }
+
+    private static double Eval(ReadOnlySpan<double> c, double t)
+    {
+        double v = 0;
+        for (int i = c.Length - 1; i >= 0; i--)
+        {
+            v = (v * t) + c[i];
+        }
+
+        return v;
     }
 
     /// <summary>

@@ -120,6 +120,10 @@ internal static class WorldCast
                         outdoors = true;
                         doors = doors.With(new Box(p.BoundsMin, p.BoundsMax, p.ZMin, p.ZMax));
                     }
+                    else if (targets[k] == LandblockEntry.MissingCell)
+                    {
+                        Closed(ref ray, p, offset, cell.CellId); // a portal to a cell not registered: a wall
+                    }
                     else if (targets[k] >= 0 && count < cells.Length && !cells[..count].Contains(targets[k]))
                     {
                         cells[count++] = targets[k];
@@ -134,10 +138,14 @@ internal static class WorldCast
 
             if (outdoors)
             {
+                // What stands outside the doors, met only where the sphere is near them (a shell's base under the house
+                // is not met from inside it).
                 Box near = doors.Grown((float)ray.Radius + PhysicsConstants.EdgeTolerance).Within(in box);
-                if (!near.IsEmpty)
+                if (!near.IsEmpty && near.Grown((float)ray.Radius).Span(in ray, offset, piece.From) is (double from, double to))
                 {
+                    ray.Within(from, to);
                     Things(ref ray, ref lands, entry, offset, in near, cells: true);
+                    ray.Everywhere();
                 }
             }
 
@@ -173,6 +181,34 @@ internal static class WorldCast
             }
 
             (piece.Cell, piece.From) = (target, exit);
+        }
+
+        /// <summary>A portal as a wall polygon of its cell: a doorway's rectangle in its plane, an opening's outline on its plane.</summary>
+        private static void Closed(ref SweptSphere ray, PortalShape p, D3 offset, uint cellId)
+        {
+            D3 rel = offset - ray.Start;
+            if (p.Kind == PortalKind.Vertical)
+            {
+                double ox = p.Origin.X + rel.X, oy = p.Origin.Y + rel.Y, tx = p.Tangent.X, ty = p.Tangent.Y;
+                double z0 = p.ZMin + rel.Z, z1 = p.ZMax + rel.Z;
+                ReadOnlySpan<D3> rectangle =
+                [
+                    new(ox + (tx * p.TMin), oy + (ty * p.TMin), z0), new(ox + (tx * p.TMax), oy + (ty * p.TMax), z0),
+                    new(ox + (tx * p.TMax), oy + (ty * p.TMax), z1), new(ox + (tx * p.TMin), oy + (ty * p.TMin), z1),
+                ];
+                ray.Polygon(rectangle, SurfaceKind.CellWall, cellId, SurfaceKind.CellCeiling);
+            }
+            else if (p.Kind == PortalKind.Horizontal && p.Outline.Length <= PhysicsConstants.MaxWallPolygonVertices)
+            {
+                Span<D3> v = stackalloc D3[p.Outline.Length];
+                for (int i = 0; i < v.Length; i++)
+                {
+                    Vector2 q = p.Outline[i];
+                    v[i] = new D3(q.X + rel.X, q.Y + rel.Y, p.PlaneZ(q.X, q.Y) + rel.Z);
+                }
+
+                ray.Polygon(v, SurfaceKind.CellWall, cellId, SurfaceKind.CellCeiling);
+            }
         }
 
         /// <summary>The piece outdoors: the path walked terrain cell by terrain cell until a stretch holds the earliest contact, or the centre passes in through a doorway.</summary>
@@ -540,5 +576,32 @@ internal static class WorldCast
             new(Vector2.Max(Lo, other.Lo), Vector2.Min(Hi, other.Hi), MathF.Max(ZLo, other.ZLo), MathF.Min(ZHi, other.ZHi));
 
         public Box Moved(Vector2 by) => new(Lo + by, Hi + by, ZLo, ZHi);
+
+        /// <summary>The fractions, from <paramref name="from"/> on, at which the centre is in this box (the frame at <paramref name="offset"/>); null when never.</summary>
+        public (double From, double To)? Span(in SweptSphere ray, D3 offset, double from)
+        {
+            D3 p = ray.Start - offset, d = ray.Move;
+            double t0 = from, t1 = 1.0;
+            Clip(p.X, d.X, Lo.X, Hi.X, ref t0, ref t1);
+            Clip(p.Y, d.Y, Lo.Y, Hi.Y, ref t0, ref t1);
+            Clip(p.Z, d.Z, ZLo, ZHi, ref t0, ref t1);
+            return t0 <= t1 ? (t0, t1) : null;
+
+            static void Clip(double p0, double dp, double lo, double hi, ref double t0, ref double t1)
+            {
+                if (dp == 0)
+                {
+                    if (p0 < lo || p0 > hi)
+                    {
+                        (t0, t1) = (1, 0);
+                    }
+
+                    return;
+                }
+
+                double a = (lo - p0) / dp, b = (hi - p0) / dp;
+                (t0, t1) = (Math.Max(t0, Math.Min(a, b)), Math.Min(t1, Math.Max(a, b)));
+            }
+        }
     }
 }

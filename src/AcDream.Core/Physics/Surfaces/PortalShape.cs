@@ -236,6 +236,9 @@ internal sealed class PortalShape
         return along >= TMin && along <= TMax && centre.Z >= ZMin && centre.Z <= ZMax;
     }
 
+    /// <summary>For a horizontal portal: its outline seen from above, in winding order (empty otherwise).</summary>
+    public ReadOnlySpan<Vector2> Outline => _outline;
+
     /// <summary>For a horizontal portal: Z of its plane at (x, y).</summary>
     public float PlaneZ(float x, float y) =>
         Origin.Z - (((OutNormal.X * (x - Origin.X)) + (OutNormal.Y * (y - Origin.Y))) / OutNormal.Z);
