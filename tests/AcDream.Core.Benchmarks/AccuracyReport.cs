@@ -26,6 +26,7 @@ internal static class AccuracyReport
         ObjectAccuracy.Run(o);
         VerticalAccuracy.Run(o);
         MoverAccuracy.Run(o);
+        CastAccuracy.Run(o);
     }
 
     private static string F(double v, string format = "0.###") => v.ToString(format, Inv);

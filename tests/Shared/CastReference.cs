@@ -4,7 +4,7 @@ using AcDream.Core.Physics;
 
 namespace AcDream.Testing;
 
-// Shared by the test projects (linked, not referenced): the cast's slow reference.
+// Shared by the test and benchmark projects (linked, not referenced): the cast's slow reference.
 
 /// <summary>
 /// A slow, double-precision reference of a cast (a sphere of radius r swept along a segment; r = 0 is a ray), written
@@ -444,6 +444,29 @@ internal sealed class CastReference
             V3[] v = [.. wall.Select(p => V3.Of(p) + offset)];
             bool ceiling = UnitNormal(v).Z <= -FloorZ;
             yield return new Polygon(v, ceiling ? SurfaceKind.CellCeiling : SurfaceKind.CellWall, cellId, name + (ceiling ? " ceiling" : " wall"));
+        }
+    }
+
+    /// <summary>
+    /// The portals of <paramref name="cells"/> that lead to a cell not among them (nor the outdoors), each its polygon
+    /// placed in double precision: a cast stops at such a portal as at a wall of the cell that holds it.
+    /// </summary>
+    public static IEnumerable<Shape> MissingPortals(IReadOnlyList<(uint Id, EnvCell Cell, CellStruct Struct)> cells)
+    {
+        var ids = cells.Select(c => c.Id).ToHashSet();
+        foreach ((uint id, EnvCell cell, CellStruct cellStruct) in cells.OrderBy(c => c.Id))
+        {
+            foreach (CellPortal portal in cell.CellPortals)
+            {
+                if (portal.OtherCellId == 0xFFFF || ids.Contains((id & 0xFFFF0000u) | portal.OtherCellId))
+                {
+                    continue;
+                }
+
+                V3[] polygon = [.. cellStruct.Polygons[portal.PolygonId].VertexIds
+                    .Select(i => V3.Of(ReferenceBody.Place(cell.Position, cellStruct.VertexArray.Vertices[(ushort)i].Origin)))];
+                yield return new Polygon(polygon, SurfaceKind.CellWall, id, FormattableString.Invariant($"cell 0x{id:X8} portal to missing 0x{portal.OtherCellId:X4}"));
+            }
         }
     }
 

@@ -297,9 +297,7 @@ internal static class CastWorlds
     /// as at a wall of the cell that holds the portal.
     /// </summary>
     public static IEnumerable<Shape> MissingCellPortals() =>
-        HoltburgPortals()
-            .Where(p => p.Other != 0xFFFF && !HoltburgCells.Fixtures.ContainsKey((p.Cell & 0xFFFF0000u) | p.Other))
-            .Select(p => (Shape)new CastReference.Polygon(p.Polygon, SurfaceKind.CellWall, p.Cell, FormattableString.Invariant($"cell 0x{p.Cell:X8} portal to missing 0x{p.Other:X4}")));
+        CastReference.MissingPortals([.. HoltburgCells.Fixtures.Select(c => (c.Key, c.Value.EnvCell, c.Value.CellStruct))]);
 
     /// <summary>The cottage's shell and the small building (building shells), placed by their frames.</summary>
     public static IEnumerable<Shape> HoltburgBuildingShapes()

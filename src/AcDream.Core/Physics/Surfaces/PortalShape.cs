@@ -11,6 +11,9 @@ internal sealed class PortalShape
 {
     private readonly Vector2[] _outline;
 
+    /// <summary>For a vertical portal: its polygon in its own plane, (along <see cref="Tangent"/> from <see cref="Origin"/>, Z); an arch is not its bounding rectangle.</summary>
+    private Vector2[] Profile { get; init; } = [];
+
     private PortalShape(PortalKind kind, Vector3 origin, Vector3 outNormal, Vector2 tangent, float tMin, float tMax, float zMin, float zMax, Vector2[] outline)
     {
         Kind = kind;
@@ -100,7 +103,13 @@ internal sealed class PortalShape
             tMax = MathF.Max(tMax, t);
         }
 
-        return new PortalShape(PortalKind.Vertical, origin, outNormal, tangent, tMin, tMax, zMin, zMax, []) { BoundsMin = boundsMin, BoundsMax = boundsMax };
+        var profile = new Vector2[vertices.Length];
+        for (int i = 0; i < vertices.Length; i++)
+        {
+            profile[i] = new Vector2(Vector2.Dot(tangent, new Vector2(vertices[i].X - origin.X, vertices[i].Y - origin.Y)), vertices[i].Z);
+        }
+
+        return new PortalShape(PortalKind.Vertical, origin, outNormal, tangent, tMin, tMax, zMin, zMax, []) { BoundsMin = boundsMin, BoundsMax = boundsMax, Profile = profile };
     }
 
     /// <summary>
@@ -210,7 +219,8 @@ internal sealed class PortalShape
     /// <summary>
     /// Whether a physics polygon (landblock-local vertices, <paramref name="centre"/> their mean) covers
     /// this portal: every vertex within <see cref="PhysicsConstants.DoorwayCoverTolerance"/> of the
-    /// portal's plane and the centre inside the opening. Such a polygon is the doorway itself, not a wall.
+    /// portal's plane and the centre inside the portal's polygon (a doorway's own outline in its plane, an
+    /// opening's seen from above). Such a polygon is the doorway itself, not a wall.
     /// </summary>
     public bool Covers(ReadOnlySpan<Vector3> polygon, Vector3 centre)
     {
@@ -232,8 +242,9 @@ internal sealed class PortalShape
             return ContainsXY(centre.X, centre.Y);
         }
 
+        // Inside the doorway's own polygon (not its bounding rectangle: the wall over an arch's shoulders is a wall).
         float along = Vector2.Dot(Tangent, new Vector2(centre.X - Origin.X, centre.Y - Origin.Y));
-        return along >= TMin && along <= TMax && centre.Z >= ZMin && centre.Z <= ZMax;
+        return Geometry.PolygonContains(Profile, new Vector2(along, centre.Z), PhysicsConstants.EdgeTolerance);
     }
 
     /// <summary>For a horizontal portal: its outline seen from above, in winding order (empty otherwise).</summary>
