@@ -239,7 +239,7 @@ internal static class WorldCast
 
                 D3 offset = OffsetOf(entry);
                 Box box = Box.Of(in ray, t0, t1, offset);
-                Terrain(ref ray, ref lands, in box, offset);
+                Terrain(ref ray, ref lands, t0, t1);
                 Things(ref ray, ref lands, entry, offset, in box, cells: true);
                 Movers(ref ray, ref lands, entry, offset, in box);
                 double door = Doorway(in ray, entry, offset, cx - ((lx - _x0) * PhysicsConstants.CellsPerSide), cy - ((ly - _y0) * PhysicsConstants.CellsPerSide), t0, t1, out int cell);
@@ -389,33 +389,40 @@ internal static class WorldCast
             }
         }
 
-        /// <summary>The terrain triangles (or bilinear cells) under the box (the frame at <paramref name="offset"/>), in whichever landblocks they are.</summary>
-        private void Terrain(ref SweptSphere ray, ref Neighbourhood lands, in Box box, D3 offset)
+        /// <summary>
+        /// The terrain triangles (or bilinear cells) within the radius of the centre's path from <paramref name="t0"/> to
+        /// <paramref name="t1"/>, in whichever landblocks they are: the terrain cells its box (grown by the radius, in
+        /// double precision, with no margin: a point on a cell's edge is on both cells' triangles, whose shared edge the
+        /// face test holds within its tolerance) covers, less those wholly above or below it.
+        /// </summary>
+        private void Terrain(ref SweptSphere ray, ref Neighbourhood lands, double t0, double t1)
         {
             int per = PhysicsConstants.CellsPerSide;
-            int c0 = (int)Math.Floor((box.Lo.X + offset.X) / Column), c1 = (int)Math.Floor((box.Hi.X + offset.X) / Column);
-            int r0 = (int)Math.Floor((box.Lo.Y + offset.Y) / Column), r1 = (int)Math.Floor((box.Hi.Y + offset.Y) / Column);
+            D3 a = ray.At(t0), b = ray.At(t1);
+            double r = ray.Radius, zLo = Math.Min(a.Z, b.Z) - r - PhysicsConstants.CastEdgeTolerance, zHi = Math.Max(a.Z, b.Z) + r + PhysicsConstants.CastEdgeTolerance;
+            int c0 = (int)Math.Floor((Math.Min(a.X, b.X) - r) / Column), c1 = (int)Math.Floor((Math.Max(a.X, b.X) + r) / Column);
+            int r0 = (int)Math.Floor((Math.Min(a.Y, b.Y) - r) / Column), r1 = (int)Math.Floor((Math.Max(a.Y, b.Y) + r) / Column);
             Span<D3> v = stackalloc D3[3];
             for (int c = c0; c <= c1; c++)
             {
-                for (int r = r0; r <= r1; r++)
+                for (int row = r0; row <= r1; row++)
                 {
-                    int lx = _x0 + FloorDiv(c, per), ly = _y0 + FloorDiv(r, per);
+                    int lx = _x0 + FloorDiv(c, per), ly = _y0 + FloorDiv(row, per);
                     if (!CellIds.IsInWorld(lx, ly) || lands.Get(lx, ly) is not LandblockEntry entry)
                     {
                         continue;
                     }
 
-                    int cx = c - ((lx - _x0) * per), cy = r - ((ly - _y0) * per);
+                    int cx = c - ((lx - _x0) * per), cy = row - ((ly - _y0) * per);
                     TerrainSurface terrain = entry.Terrain;
                     terrain.Corners(cx, cy, out double sw, out double nw, out double se, out double ne);
-                    if (Math.Max(Math.Max(sw, nw), Math.Max(se, ne)) < box.ZLo || Math.Min(Math.Min(sw, nw), Math.Min(se, ne)) > box.ZHi)
+                    if (Math.Max(Math.Max(sw, nw), Math.Max(se, ne)) < zLo || Math.Min(Math.Min(sw, nw), Math.Min(se, ne)) > zHi)
                     {
                         continue; // the path's stretch is wholly above or below this cell's ground
                     }
 
                     uint id = CellIds.Prefix(lx, ly) | (uint)((cx * per) + cy + 1);
-                    double x = (c * Column) - ray.Start.X, y = (r * Column) - ray.Start.Y, z = -ray.Start.Z;
+                    double x = (c * Column) - ray.Start.X, y = (row * Column) - ray.Start.Y, z = -ray.Start.Z;
                     (sw, nw, se, ne) = (sw + z, nw + z, se + z, ne + z);
                     if (terrain.LandblockId is null)
                     {
