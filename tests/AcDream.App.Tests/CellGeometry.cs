@@ -63,16 +63,7 @@ internal static class CellGeometry
     /// <summary>The unit normal (Newell) and offset of the polygon's plane: n·x + d = 0.</summary>
     private static (Vec3 Normal, double D) Plane(Vec3[] v)
     {
-        double x = 0, y = 0, z = 0;
-        for (int i = 0; i < v.Length; i++)
-        {
-            Vec3 a = v[i], b = v[(i + 1) % v.Length];
-            x += (a.Y - b.Y) * (a.Z + b.Z);
-            y += (a.Z - b.Z) * (a.X + b.X);
-            z += (a.X - b.X) * (a.Y + b.Y);
-        }
-
-        var n = new Vec3(x, y, z);
+        Vec3 n = Newell(v);
         n = Scale(n, 1 / n.Length);
         var c = new Vec3(v.Average(p => p.X), v.Average(p => p.Y), v.Average(p => p.Z));
         return (n, -Dot(n, c));

@@ -365,17 +365,9 @@ internal sealed class CastReference
     /// <summary>The unit normal of a polygon's winding (Newell's sum); zero for no area.</summary>
     public static V3 UnitNormal(IReadOnlyList<V3> v)
     {
-        double x = 0, y = 0, z = 0;
-        for (int i = 0; i < v.Count; i++)
-        {
-            V3 a = v[i], b = v[(i + 1) % v.Count];
-            x += (a.Y - b.Y) * (a.Z + b.Z);
-            y += (a.Z - b.Z) * (a.X + b.X);
-            z += (a.X - b.X) * (a.Y + b.Y);
-        }
-
-        double l = Math.Sqrt((x * x) + (y * y) + (z * z));
-        return l == 0 ? default : new V3(x / l, y / l, z / l);
+        ReferenceBody.Vec3 n = ReferenceBody.Newell([.. v.Select(p => new ReferenceBody.Vec3(p.X, p.Y, p.Z))]);
+        double l = Math.Sqrt((n.X * n.X) + (n.Y * n.Y) + (n.Z * n.Z));
+        return l == 0 ? default : new V3(n.X / l, n.Y / l, n.Z / l);
     }
 
     private static V3 Mean(IReadOnlyList<V3> v) => new(v.Average(p => p.X), v.Average(p => p.Y), v.Average(p => p.Z));

@@ -422,7 +422,7 @@ internal sealed class ReferenceBody
         polygon.VertexIds.Select(id => Place(frame, cellStruct.VertexArray.Vertices[(ushort)id].Origin)).ToArray();
 
     /// <summary>The Newell normal (the winding's, length twice the area).</summary>
-    private static Vec3 Newell(IReadOnlyList<Vec3> v)
+    public static Vec3 Newell(IReadOnlyList<Vec3> v)
     {
         double x = 0, y = 0, z = 0;
         for (int i = 0; i < v.Count; i++)
