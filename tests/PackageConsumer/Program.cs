@@ -1,5 +1,6 @@
-// A consumer of the AcDream.Core package: one flat landblock, one step east, the answer printed.
-// Exits 1 when the answer is not the obvious one (on the ground, at the flat height, moved 1 m east).
+// A consumer of the AcDream.Core package: one flat landblock, one step east and one ray down, the answers printed.
+// Exits 1 when an answer is not the obvious one (on the ground, at the flat height, moved 1 m east; the ray meets the
+// terrain at the flat height).
 using System.Numerics;
 using AcDream.Core.Physics;
 
@@ -22,7 +23,12 @@ ResolveResult r = engine.Resolve(start, startCell, delta: new Vector3(1f, 0f, 0f
 Console.WriteLine(FormattableString.Invariant(
     $"Resolve: position ({r.Position.X:F3}, {r.Position.Y:F3}, {r.Position.Z:F3}), cell 0x{r.CellId:X8}, on ground {r.IsOnGround}"));
 
-bool ok = r.IsOnGround
+CastHit down = engine.Cast(start + new Vector3(0f, 0f, 5f), startCell, start - new Vector3(0f, 0f, 5f), new CastOptions(0f));
+Console.WriteLine(FormattableString.Invariant(
+    $"Cast: {down.Kind} at ({down.Point.X:F3}, {down.Point.Y:F3}, {down.Point.Z:F3}), fraction {down.Fraction:F3}"));
+
+bool ok = down.Hit && down.Kind == SurfaceKind.Terrain && Math.Abs(down.Point.Z - groundZ) < 1e-3f
+    && r.IsOnGround
     && Math.Abs(r.Position.Z - groundZ) < 1e-3f
     && Math.Abs(r.Position.X - 97f) < 1e-3f
     && Math.Abs(r.Position.Y - 96f) < 1e-3f
