@@ -14,12 +14,15 @@ public sealed partial class PhysicsEngine
     /// </summary>
     /// <remarks>
     /// <para>
-    /// Positions are world metres; the contact is exact for the game's terrain triangles, polygons and cylinders
-    /// (closed form in double precision; a cylinder's rim, by the exact roots of a quartic). Polygons are
-    /// two-sided and a polygon's face counts within 1e-6 m of its edges, so nothing passes a surface of zero thickness
-    /// or the seam between two. On the spec's bilinear terrain a ray is exact and a sphere meets the ground at its lowest
-    /// point. A sphere that starts overlapping a surface and moves towards it is stopped at fraction 0; one moving away
-    /// or along it is not.
+    /// Positions are world metres; the contact is in closed form in double precision for the game's terrain triangles,
+    /// polygons and cylinders (a cylinder's rim: the roots of a quartic, isolated and bisected to double precision).
+    /// Polygons are two-sided and a polygon's face counts within 1e-6 m of its edges, so nothing passes a surface of zero
+    /// thickness or the seam between two. On the spec's bilinear terrain a ray is exact and a sphere meets the ground at
+    /// its lowest point. A sphere that starts within its radius of a polygon and moves into its plane is stopped at fraction
+    /// 0 with the polygon's normal; one moving along the plane or away is free of it (a sphere gliding over a floor of many
+    /// triangles); a start exactly on a polygon's plane is free of it either way (a ray up from the feet). A cylinder
+    /// decides by its nearest point. A cast of zero
+    /// length meets nothing. Unlike <c>Resolve</c>, it takes the end point, not a delta.
     /// </para>
     /// <para>
     /// Outdoors the sphere meets the terrain, outdoor objects (buildings by their shells) and the walls of buildings'
@@ -27,13 +30,15 @@ public sealed partial class PhysicsEngine
     /// portal neighbours' polygons and objects (and, near a door, what stands outside the door); its centre passing out
     /// through a portal goes on beyond it. A start exactly on a surface moving off it (a ray up from the feet) is free of it. The movers committed last (<see cref="Movers"/>) are met by their walls, as
     /// <paramref name="options"/> filters them; a mover whose walls lie more than a landblock from the start is not.
-    /// The cast reads each landblock once, allocates nothing, and never changes the engine.
+    /// The cast reads each landblock of the 3 × 3 around its start once (one farther away, afresh each time), allocates
+    /// nothing (after a thread's first cast with movers near, which makes the thread's record of them), and never
+    /// changes the engine.
     /// </para>
     /// <para>
     /// A cast from a landblock that is not loaded returns a contact at fraction 0 with kind <see cref="SurfaceKind.None"/>;
     /// one whose path reaches land not loaded (or the world's edge) stops there the same way. A cast that meets nothing
-    /// returns <paramref name="to"/> with fraction 1. At most <see cref="PhysicsConstants.MaxCellVisits"/> cells or
-    /// stretches outdoors are entered.
+    /// returns <paramref name="to"/> with fraction 1. It enters at most <see cref="PhysicsConstants.MaxCellVisits"/>
+    /// pieces (a cell, or a walk outdoors); one that would need more ends where its last piece began, the same way.
     /// </para>
     /// </remarks>
     /// <param name="from">The sphere's centre at the start, world metres.</param>
@@ -51,8 +56,11 @@ public sealed partial class PhysicsEngine
         var lands = new Neighbourhood(_registry);
         if (!Locator.TryFind(_frame, ref lands, from, fromCellId, out Place start, nameof(fromCellId)))
         {
+            // The land under the start is not loaded: stopped where it is, in its cell (an outdoor one found from the position).
             Vector3 back = from == to ? Vector3.Zero : Vector3.Normalize(from - to);
-            return new CastHit(true, 0f, from, from, back, SurfaceKind.None, 0, fromCellId); // the land under the start is not loaded
+            _frame.Locate(from, fromCellId, out int x, out int y, out Vector2 local);
+            uint cell = CellIds.IsIndoor(fromCellId) ? fromCellId : WorldFrame.OutdoorCellId(x, y, local);
+            return new CastHit(true, 0f, from, from - (back * options.Radius), back, SurfaceKind.None, 0, cell);
         }
 
         Vector3 move = to - from;
@@ -98,6 +106,6 @@ public sealed partial class PhysicsEngine
             throw new ArgumentException($"options.Radius {radius} must be finite and at least 0 metres.", "options");
         }
 
-        throw new ArgumentException($"fromCellId 0x{cellId:X8} is not a cell of the world (0x0001..0x0040 outdoors, 0x0100..0xFFFD indoors, landblock X and Y below 0xFF).", "fromCellId");
+        throw new ArgumentException($"fromCellId 0x{cellId:X8} is not a cell of the world (0x0000..0x0040 outdoors, 0x0100..0xFFFD indoors, landblock X and Y below 0xFF).", "fromCellId");
     }
 }

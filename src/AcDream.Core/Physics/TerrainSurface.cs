@@ -197,7 +197,7 @@ public sealed class TerrainSurface
         return new Vector3((float)(-gx * n), (float)(-gy * n), (float)n);
     }
 
-    /// <summary>The corner heights of terrain cell (cx, cy), 0..7 each, metres.</summary>
+    /// <summary>The corner heights, metres, of terrain cell (cx, cy) (each index 0..7).</summary>
     internal void Corners(int cx, int cy, out double sw, out double nw, out double se, out double ne)
     {
         int i = (cx * Side) + cy;

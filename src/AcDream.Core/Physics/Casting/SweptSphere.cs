@@ -120,6 +120,11 @@ internal struct SweptSphere
         var c = new D3(cx / v.Length, cy / v.Length, cz / v.Length);
         double s0 = -D3.Dot(n, c); // the start's signed distance from the plane
         double rate = D3.Dot(n, Move);
+        if (Radius > 0 && Math.Abs(s0) < Radius && Overlapping(v, n, s0, rate, named, id))
+        {
+            return; // the sphere starts within its radius of the polygon: met at once, or free of it
+        }
+
         double side = s0 > 0 || (s0 == 0 && rate > 0) ? 1.0 : -1.0; // a start on the plane is on the side it moves to: away
         if (side * rate < 0)
         {
@@ -144,6 +149,46 @@ internal struct SweptSphere
                 Corner(v[i], named, id);
             }
         }
+    }
+
+    /// <summary>
+    /// Whether the sphere starts within its radius of the polygon (the start <paramref name="s0"/> from its plane, less
+    /// than the radius), which then decides for the whole polygon: the sphere is met at once when it moves into the
+    /// polygon's plane from its side (<paramref name="rate"/> the move's speed along the normal), and is free of it moving
+    /// along the plane or away. Decided by the plane, not by the nearest point: a sphere gliding over a floor of many
+    /// triangles comes nearer to the edges it crosses, but not into the floor.
+    /// </summary>
+    private bool Overlapping(ReadOnlySpan<D3> v, D3 n, double s0, double rate, SurfaceKind kind, uint id)
+    {
+        D3 nearest = n * -s0; // the start's foot on the plane
+        if (!Inside(v, n, nearest))
+        {
+            double best = double.PositiveInfinity;
+            for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
+            {
+                D3 e = v[i] - v[j];
+                double ee = D3.Dot(e, e), s = ee > 0 ? Math.Clamp(D3.Dot(-v[j], e) / ee, 0.0, 1.0) : 0.0;
+                D3 q = v[j] + (e * s);
+                double d = D3.Dot(q, q);
+                if (d < best)
+                {
+                    (best, nearest) = (d, q);
+                }
+            }
+        }
+
+        if (!(D3.Dot(nearest, nearest) < Radius * Radius))
+        {
+            return false; // not within the radius: the sweep below finds the contact
+        }
+
+        double side = s0 > 0 ? 1.0 : -1.0;
+        if (s0 != 0 && side * rate < 0)
+        {
+            Keep(0, n * side, kind, id);
+        }
+
+        return true;
     }
 
     /// <summary>Whether <paramref name="p"/>, on the plane of the convex polygon <paramref name="v"/> (normal <paramref name="n"/>), is inside it or within <see cref="PhysicsConstants.CastEdgeTolerance"/> of its edges.</summary>
@@ -338,7 +383,7 @@ internal struct SweptSphere
         Span<double> p = [(s0 * s0) - (k * a0), (2 * s1 * s0) - (k * a1), (s1 * s1) + (2 * s2 * s0) - (k * a2), 2 * s2 * s1, s2 * s2];
         // Within the torus at the start: met at once when moving towards the circle, else free of it.
         double w0 = -z, rho0 = Math.Sqrt(a0);
-        if ((((rho0 - radius) * (rho0 - radius)) + (w0 * w0)) < Radius * Radius)
+        if ((((rho0 - radius) * (rho0 - radius)) + (w0 * w0)) <= Radius * Radius)
         {
             double f0 = rho0 > 0 ? radius / rho0 : 0;
             var away0 = new D3(-axisX + (axisX * f0), -axisY + (axisY * f0), w0);
@@ -350,7 +395,7 @@ internal struct SweptSphere
             return;
         }
 
-        Span<double> roots = stackalloc double[4];
+        Span<double> roots = stackalloc double[6];
         int count = Roots(p, 0, limit, roots);
         for (int i = 0; i < count; i++)
         {
@@ -402,12 +447,17 @@ internal struct SweptSphere
             d[i] = (i + 1) * c[i + 1];
         }
 
-        Span<double> turns = stackalloc double[n - 1];
+        Span<double> turns = stackalloc double[n + 1]; // the derivative's n − 1 roots, and room for a doubled one
         int m = Roots(d, lo, hi, turns);
         double a = lo, fa = Eval(c, lo);
         for (int j = 0; j <= m; j++)
         {
             double b = j < m ? turns[j] : hi, fb = Eval(c, b);
+            if (count == roots.Length)
+            {
+                break; // (a degree-n polynomial has n roots; flat stretches of rounding could list one twice)
+            }
+
             if (fa == 0)
             {
                 if (count == 0 || roots[count - 1] != a)
@@ -423,7 +473,7 @@ internal struct SweptSphere
             (a, fa) = (b, fb);
         }
 
-        if (fa == 0 && (count == 0 || roots[count - 1] != a))
+        if (fa == 0 && count < roots.Length && (count == 0 || roots[count - 1] != a))
         {
             roots[count++] = a;
         }
@@ -485,10 +535,22 @@ internal struct SweptSphere
         double k1 = Move.Z - ((b * du) + (c * dv) + (d * ((u0 * dv) + (v0 * du))));
         double k2 = -(d * du * dv);
 
-        // Earliest t in the cell's span of the ray where k0 + k1 t + k2 t² falls to 0 from above.
+        // Earliest t in the cell's span of the ray where k0 + k1 t + k2 t² falls to 0 from above; below the patch where the
+        // ray enters the cell, met at once moving down into it, free of it moving up.
         (double tIn, double tOut) = Span(u0, du, v0, dv);
-        if (!(tIn <= tOut) || !(k0 + (k1 * tIn) + (k2 * tIn * tIn) >= 0))
+        if (!(tIn <= tOut))
         {
+            return;
+        }
+
+        double gapIn = k0 + (k1 * tIn) + (k2 * tIn * tIn), slopeIn = k1 + (2 * k2 * tIn);
+        if (gapIn < 0 || (gapIn == 0 && slopeIn < 0))
+        {
+            if (slopeIn < 0 && tIn < T && tIn <= 1.0)
+            {
+                Keep(tIn, PatchNormal(u0 + (du * tIn), v0 + (dv * tIn), b, c, d, size), SurfaceKind.Terrain, id);
+            }
+
             return;
         }
 
@@ -510,9 +572,9 @@ internal struct SweptSphere
                 double r1 = q / k2, r2 = q != 0 ? k0 / q : double.PositiveInfinity;
                 foreach (double r in (ReadOnlySpan<double>)[r1, r2])
                 {
-                    if (r >= tIn && r < best)
+                    if (r >= tIn && r < best && k1 + (2 * k2 * r) < 0)
                     {
-                        best = r;
+                        best = r; // falling through the patch there (a root where the ray rises off it is not a contact)
                     }
                 }
             }
@@ -523,10 +585,15 @@ internal struct SweptSphere
             return;
         }
 
-        double u = u0 + (du * best), v = v0 + (dv * best);
+        Keep(best, PatchNormal(u0 + (du * best), v0 + (dv * best), b, c, d, size), SurfaceKind.Terrain, id);
+    }
+
+    /// <summary>The bilinear patch's unit normal (up) at (u, v), for h = a + b·u + c·v + d·u·v over a cell of side <paramref name="size"/>.</summary>
+    private static D3 PatchNormal(double u, double v, double b, double c, double d, double size)
+    {
         double gx = (b + (d * v)) / size, gy = (c + (d * u)) / size;
         double n = 1.0 / Math.Sqrt(1.0 + (gx * gx) + (gy * gy));
-        Keep(best, new D3(-gx * n, -gy * n, n), SurfaceKind.Terrain, id);
+        return new D3(-gx * n, -gy * n, n);
     }
 
     /// <summary>The fractions of the ray within the unit square u, v ∈ 0..1 (empty: in &gt; out).</summary>

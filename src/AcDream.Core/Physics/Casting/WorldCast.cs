@@ -37,6 +37,13 @@ internal static class WorldCast
         public int Cell;
         public double From;
         public bool Done;
+
+        /// <summary>
+        /// How far beyond a portal's plane (metres) the centre may be and still pass through it at once: at the start, the
+        /// world frame's rounding of the start (a cast from another's rounded answer); after a crossing, none (the next
+        /// crossing must come later, so two portals meeting at an edge cannot hand the centre back and forth).
+        /// </summary>
+        public double Slack;
     }
 
     public static CastHit Run(in WorldFrame frame, ref Neighbourhood lands, in Place start, Vector3 from, Vector3 to, in CastOptions options)
@@ -44,7 +51,8 @@ internal static class WorldCast
         var origin = new D3(start.Local.X, start.Local.Y, from.Z);
         var move = new D3((double)to.X - from.X, (double)to.Y - from.Y, (double)to.Z - from.Z);
         var ray = new SweptSphere(origin, move, options.Radius);
-        var piece = new Piece { Entry = start.Entry, Cell = start.CellIndex };
+        float rounding = 2f * MathF.Max(Geometry.Spacing(MathF.Abs(from.X)), MathF.Max(Geometry.Spacing(MathF.Abs(from.Y)), Geometry.Spacing(MathF.Abs(from.Z))));
+        var piece = new Piece { Entry = start.Entry, Cell = start.CellIndex, Slack = Math.Max(PhysicsConstants.EdgeTolerance, rounding) };
         var cast = new Walk(start.X, start.Y, options);
         for (int visit = 0; visit < PhysicsConstants.MaxCellVisits && !piece.Done; visit++)
         {
@@ -56,6 +64,12 @@ internal static class WorldCast
             {
                 cast.Outdoors(ref ray, ref lands, ref piece);
             }
+        }
+
+        if (!piece.Done && piece.From < ray.T)
+        {
+            // Out of visits: the rest of the path was not looked at, so the cast ends where the last piece began.
+            ray.Stop(piece.From, -move * (1.0 / Math.Max(move.Length, double.Epsilon)), SurfaceKind.None, 0);
         }
 
         double t = Math.Min(ray.T, 1.0);
@@ -74,6 +88,7 @@ internal static class WorldCast
     }
 
     /// <summary>The walk's fixed state: the start's landblock (the cast's frame) and the options.</summary>
+    [SkipLocalsInit] // the vertex buffers are written before they are read
     private readonly struct Walk(int x0, int y0, CastOptions options)
     {
         private readonly int _x0 = x0, _y0 = y0;
@@ -94,7 +109,7 @@ internal static class WorldCast
         {
             LandblockEntry entry = piece.Entry;
             D3 offset = OffsetOf(entry);
-            Box box = Box.Of(in ray, piece.From, 1.0, offset);
+            Box box = Box.Of(in ray, piece.From, Math.Min(ray.T, 1.0), offset); // (nothing beyond a contact found counts)
 
             // The cells whose portals' bounds the rest of the path meets, breadth first from the centre's.
             Span<int> cells = stackalloc int[PhysicsConstants.MaxCellVisits];
@@ -158,7 +173,7 @@ internal static class WorldCast
             int through = -1;
             for (int k = 0; k < own.Length; k++)
             {
-                double t = Crossing(in ray, own[k], offset, piece.From, outward: true);
+                double t = Crossing(in ray, own[k], offset, piece.From, piece.Slack, outward: true);
                 if (t < exit)
                 {
                     (exit, through) = (t, k);
@@ -180,10 +195,10 @@ internal static class WorldCast
                 return;
             }
 
-            (piece.Cell, piece.From) = (target, exit);
+            (piece.Cell, piece.From, piece.Slack) = (target, exit, 0);
         }
 
-        /// <summary>A portal as a wall polygon of its cell: a doorway's rectangle in its plane, an opening's outline on its plane.</summary>
+        /// <summary>A portal as a surface of its cell: a doorway's rectangle in its plane (a wall), an opening's outline on its plane (the ceiling or floor it is cut in).</summary>
         private static void Closed(ref SweptSphere ray, PortalShape p, D3 offset, uint cellId)
         {
             D3 rel = offset - ray.Start;
@@ -196,7 +211,7 @@ internal static class WorldCast
                     new(ox + (tx * p.TMin), oy + (ty * p.TMin), z0), new(ox + (tx * p.TMax), oy + (ty * p.TMax), z0),
                     new(ox + (tx * p.TMax), oy + (ty * p.TMax), z1), new(ox + (tx * p.TMin), oy + (ty * p.TMin), z1),
                 ];
-                ray.Polygon(rectangle, SurfaceKind.CellWall, cellId, SurfaceKind.CellCeiling);
+                ray.Polygon(rectangle, SurfaceKind.CellWall, cellId, SurfaceKind.CellWall);
             }
             else if (p.Kind == PortalKind.Horizontal && p.Outline.Length <= PhysicsConstants.MaxWallPolygonVertices)
             {
@@ -207,7 +222,8 @@ internal static class WorldCast
                     v[i] = new D3(q.X + rel.X, q.Y + rel.Y, p.PlaneZ(q.X, q.Y) + rel.Z);
                 }
 
-                ray.Polygon(v, SurfaceKind.CellWall, cellId, SurfaceKind.CellCeiling);
+                SurfaceKind named = p.OutNormal.Z > 0 ? SurfaceKind.CellCeiling : SurfaceKind.CellFloor; // an opening in the ceiling, or in the floor
+                ray.Polygon(v, named, cellId, named);
             }
         }
 
@@ -217,6 +233,14 @@ internal static class WorldCast
             D3 p = ray.At(piece.From), d = ray.Move;
             int cx = (int)Math.Floor(p.X / Column), cy = (int)Math.Floor(p.Y / Column);
             int stepX = d.X > 0 ? 1 : d.X < 0 ? -1 : 0, stepY = d.Y > 0 ? 1 : d.Y < 0 ? -1 : 0;
+            (cx, cy) = (stepX < 0 && p.X == cx * Column ? cx - 1 : cx, stepY < 0 && p.Y == cy * Column ? cy - 1 : cy); // on a line, moving back: the cell it enters
+
+            // Come out of a cell: what lies outdoors is met from the doorway on (not the ground under the house behind it).
+            if (piece.From > 0)
+            {
+                ray.Within(piece.From, 1.0);
+            }
+
             double nextX = stepX == 0 ? double.PositiveInfinity : (((cx + (stepX > 0 ? 1 : 0)) * Column) - ray.Start.X) / d.X;
             double nextY = stepY == 0 ? double.PositiveInfinity : (((cy + (stepY > 0 ? 1 : 0)) * Column) - ray.Start.Y) / d.Y;
             double deltaX = stepX == 0 ? 0 : Column / Math.Abs(d.X), deltaY = stepY == 0 ? 0 : Column / Math.Abs(d.Y);
@@ -227,6 +251,7 @@ internal static class WorldCast
                 int lx = _x0 + FloorDiv(cx, PhysicsConstants.CellsPerSide), ly = _y0 + FloorDiv(cy, PhysicsConstants.CellsPerSide);
                 if (!CellIds.IsInWorld(lx, ly) || lands.Get(lx, ly) is not LandblockEntry entry)
                 {
+                    ray.Everywhere();
                     if (t0 < ray.T)
                     {
                         D3 back = -d * (1.0 / Math.Max(d.Length, double.Epsilon));
@@ -242,19 +267,20 @@ internal static class WorldCast
                 Terrain(ref ray, ref lands, t0, t1);
                 Things(ref ray, ref lands, entry, offset, in box, cells: true);
                 Movers(ref ray, ref lands, entry, offset, in box);
-                double door = Doorway(in ray, entry, offset, cx - ((lx - _x0) * PhysicsConstants.CellsPerSide), cy - ((ly - _y0) * PhysicsConstants.CellsPerSide), t0, t1, out int cell);
+                double door = Doorway(in ray, entry, offset, cx - ((lx - _x0) * PhysicsConstants.CellsPerSide), cy - ((ly - _y0) * PhysicsConstants.CellsPerSide), t0, t1, piece.Slack, out int cell);
                 if (door < ray.T && door <= t1)
                 {
                     // In through a doorway: every contact found is later than it, and what the centre meets from here is the
                     // building's (the terrain under a floor, a wall's outer face from inside, are not met indoors).
+                    ray.Everywhere();
                     ray.Forget();
-                    (piece.Entry, piece.Cell, piece.From) = (entry, cell, door);
+                    (piece.Entry, piece.Cell, piece.From, piece.Slack) = (entry, cell, door, 0);
                     return;
                 }
 
                 if (ray.T <= t1 || t1 >= 1.0)
                 {
-                    piece.Entry = entry;
+                    ray.Everywhere();
                     piece.Done = true;
                     return;
                 }
@@ -476,7 +502,7 @@ internal static class WorldCast
         }
 
         /// <summary>The earliest fraction in t0..t1 at which the centre passes in through a doorway of a cell over terrain cell (cx, cy) of <paramref name="entry"/>; +∞ for none.</summary>
-        private static double Doorway(in SweptSphere ray, LandblockEntry entry, D3 offset, int cx, int cy, double t0, double t1, out int cell)
+        private static double Doorway(in SweptSphere ray, LandblockEntry entry, D3 offset, int cx, int cy, double t0, double t1, double slack, out int cell)
         {
             cell = -1;
             double best = double.PositiveInfinity;
@@ -496,7 +522,7 @@ internal static class WorldCast
                         continue;
                     }
 
-                    double t = Crossing(in ray, portals[k], offset, t0, outward: false);
+                    double t = Crossing(in ray, portals[k], offset, t0, t0 == 0 ? slack : 0, outward: false);
                     if (t <= t1 && t < best)
                     {
                         (best, cell) = (t, c);
@@ -509,11 +535,12 @@ internal static class WorldCast
     }
 
     /// <summary>
-    /// The fraction (≥ <paramref name="from"/>) at which the centre passes through the portal's opening, out of its cell
-    /// (<paramref name="outward"/>) or into it; +∞ when it does not before the end. A centre on the plane within the
-    /// edge tolerance, moving through, passes at once.
+    /// The fraction at which the centre passes through the portal's opening, out of its cell (<paramref name="outward"/>)
+    /// or into it; +∞ when it does not before the end. With a <paramref name="slack"/>, a centre on the plane or beyond it
+    /// by no more than that, moving through, passes at <paramref name="from"/>; without, only later than
+    /// <paramref name="from"/>.
     /// </summary>
-    private static double Crossing(in SweptSphere ray, PortalShape portal, D3 offset, double from, bool outward)
+    private static double Crossing(in SweptSphere ray, PortalShape portal, D3 offset, double from, double slack, bool outward)
     {
         Vector3 n = portal.OutNormal;
         if (portal.Kind == PortalKind.Degenerate)
@@ -526,7 +553,7 @@ internal static class WorldCast
         double d0 = D3.Dot(normal, ray.At(from) - o), rate = D3.Dot(normal, ray.Move);
         double sign = outward ? 1 : -1;
         (d0, rate) = (d0 * sign, rate * sign);
-        if (!(rate > 0) || d0 > PhysicsConstants.EdgeTolerance)
+        if (!(rate > 0) || d0 > slack || (slack == 0 && d0 >= 0))
         {
             return double.PositiveInfinity; // moving away from it, along it, or already beyond
         }

@@ -4,8 +4,8 @@ namespace AcDream.Core.Physics;
 
 /// <summary>
 /// A portal polygon prepared for crossing tests, in landblock-local metres. A doorway (vertical)
-/// is tested as the rectangle that bounds it in its own plane; a floor or ceiling opening
-/// (horizontal) as its outline seen from above.
+/// is crossed within the rectangle that bounds it in its own plane (whether a polygon covers it is
+/// decided by its own outline); a floor or ceiling opening (horizontal) by its outline seen from above.
 /// </summary>
 internal sealed class PortalShape
 {
