@@ -60,7 +60,7 @@ public readonly record struct CameraView(
 /// (<see cref="CameraView.Overlapping"/>): the minimum length wins over clearance.
 /// </para>
 /// <para>
-/// The eye's cell is the engine's: the cast's end when the boom met nothing, else a cast from the pivot (or the slide's
+/// The eye's cell is the engine's: the cast's end when the boom met nothing, else a ray from the pivot (or the slide's
 /// start) to the eye. One frame is two casts, three when the boom is pulled in; nothing is allocated.
 /// </para>
 /// </remarks>
@@ -146,7 +146,7 @@ public sealed class ChaseCamera
         if (reach >= MinBoom)
         {
             Vector3 eye = pivot + (along * reach);
-            uint eyeCell = _engine.Cast(pivot, pivotCell, eye, in _sphere).CellId;
+            uint eyeCell = _engine.Cast(pivot, pivotCell, eye, in _ray).CellId; // (a ray: the eye's cell, the sphere having stopped short of it)
             return new CameraView(pivot, pivotCell, eye, eyeCell, reach, true, boom.Kind, boom.Id, boom.Position, false, false);
         }
 

@@ -129,10 +129,10 @@ internal struct SweptSphere
         if (side * rate < 0)
         {
             // Approaching the plane: the face is met when the centre is a radius from it.
-            double t = Math.Max((Math.Abs(s0) - Radius) / (-side * rate), 0.0);
+            double t = Math.Max((Math.Abs(s0) - Radius) / (-side * rate), 0.0); // (0 only when the start's foot is off the polygon)
             if (t < T && t <= 1.0)
             {
-                D3 touch = (Move * t) - (n * (side * Math.Min(Radius, Math.Abs(s0 + (rate * t)))));
+                D3 touch = (Move * t) - (n * (side * Radius)); // (only its place in the plane matters to the inside test)
                 if (Inside(v, n, touch))
                 {
                     Keep(t, n * side, named, id);
@@ -221,36 +221,23 @@ internal struct SweptSphere
         double A = (ee * MoveSquared) - (ed * ed);
         double B = (ee * D3.Dot(m, Move)) - (ed * em);
         double C = (ee * (D3.Dot(m, m) - (Radius * Radius))) - (em * em);
-        double t;
-        if (C < 0)
+        if (C < 0 || !(A > 1e-12 * ee * MoveSquared) || !(B < 0))
         {
-            // Already within the radius of the edge's line.
-            double s0 = em / ee;
-            if (s0 < 0 || s0 > 1 || !(B < 0))
-            {
-                return;
-            }
-
-            t = 0;
+            // Within the radius of the edge's line already (beside the segment its ends answer; on it, the polygon's start
+            // rule has decided), moving along the edge (its ends answer), or away.
+            return;
         }
-        else
+
+        double disc = (B * B) - (A * C);
+        if (disc < 0)
         {
-            if (!(A > 1e-12 * ee * MoveSquared) || !(B < 0))
-            {
-                return; // along the edge (its ends answer) or moving away
-            }
+            return;
+        }
 
-            double disc = (B * B) - (A * C);
-            if (disc < 0)
-            {
-                return;
-            }
-
-            t = (-B - Math.Sqrt(disc)) / A;
-            if (!(t < T) || t > 1.0)
-            {
-                return;
-            }
+        double t = (-B - Math.Sqrt(disc)) / A;
+        if (!(t < T) || t > 1.0)
+        {
+            return;
         }
 
         D3 centre = Move * t;
@@ -268,23 +255,18 @@ internal struct SweptSphere
     {
         D3 m = -p;
         double b = D3.Dot(m, Move), c = D3.Dot(m, m) - (Radius * Radius);
-        if (!(b < 0))
+        if (!(b < 0) || c < 0)
         {
-            return; // moving away or along
+            return; // moving away or along; or within the radius already, where the polygon's start rule has decided
         }
 
-        double t = 0;
-        if (c >= 0)
+        double disc = (b * b) - (MoveSquared * c);
+        if (disc < 0)
         {
-            double disc = (b * b) - (MoveSquared * c);
-            if (disc < 0)
-            {
-                return;
-            }
-
-            t = (-b - Math.Sqrt(disc)) / MoveSquared;
+            return;
         }
 
+        double t = (-b - Math.Sqrt(disc)) / MoveSquared;
         if (t < T && t <= 1.0)
         {
             Keep(t, Towards((Move * t) - p), kind, id);

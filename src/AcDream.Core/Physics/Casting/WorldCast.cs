@@ -159,7 +159,7 @@ internal static class WorldCast
                 if (!near.IsEmpty && near.Grown((float)ray.Radius).Span(in ray, offset, piece.From) is (double from, double to))
                 {
                     ray.Within(from, to);
-                    Things(ref ray, ref lands, entry, offset, in near, cells: true);
+                    Things(ref ray, ref lands, entry, offset, in near);
                     ray.Everywhere();
                 }
             }
@@ -265,7 +265,7 @@ internal static class WorldCast
                 D3 offset = OffsetOf(entry);
                 Box box = Box.Of(in ray, t0, t1, offset);
                 Terrain(ref ray, ref lands, t0, t1);
-                Things(ref ray, ref lands, entry, offset, in box, cells: true);
+                Things(ref ray, ref lands, entry, offset, in box);
                 Movers(ref ray, ref lands, entry, offset, in box);
                 double door = Doorway(in ray, entry, offset, cx - ((lx - _x0) * PhysicsConstants.CellsPerSide), cy - ((ly - _y0) * PhysicsConstants.CellsPerSide), t0, t1, piece.Slack, out int cell);
                 if (door < ray.T && door <= t1)
@@ -382,24 +382,24 @@ internal static class WorldCast
 
         /// <summary>
         /// What stands outdoors within the box (the frame of <paramref name="entry"/>, at <paramref name="offset"/> in the
-        /// cast's): its outdoor objects and, with <paramref name="cells"/>, the walls of its cells met from outdoors; the same
-        /// of every neighbour whose things reach into the box.
+        /// cast's): its outdoor objects and the walls of its cells met from outdoors; the same of every neighbour whose things
+        /// reach into the box.
         /// </summary>
-        private void Things(ref SweptSphere ray, ref Neighbourhood lands, LandblockEntry entry, D3 offset, in Box box, bool cells)
+        private void Things(ref SweptSphere ray, ref Neighbourhood lands, LandblockEntry entry, D3 offset, in Box box)
         {
-            Outdoor(ref ray, entry, offset, in box, cells);
+            Outdoor(ref ray, entry, offset, in box);
             SeamNeighbours across = Neighbourhood.Across(ref lands, entry, box.Lo, box.Hi);
             while (across.MoveNext())
             {
                 Vector2 o = across.Offset;
                 Box there = box.Moved(-o);
-                Outdoor(ref ray, across.Current, offset + new D3(o.X, o.Y, 0), in there, cells);
+                Outdoor(ref ray, across.Current, offset + new D3(o.X, o.Y, 0), in there);
             }
         }
 
-        private void Outdoor(ref SweptSphere ray, LandblockEntry entry, D3 offset, in Box box, bool cells)
+        private void Outdoor(ref SweptSphere ray, LandblockEntry entry, D3 offset, in Box box)
         {
-            if (cells && entry.OutdoorCellWalls is BoxGrid walls)
+            if (entry.OutdoorCellWalls is BoxGrid walls)
             {
                 for (BoxGrid.Cursor near = walls.Near(box.Lo, box.Hi); near.MoveNext();)
                 {
