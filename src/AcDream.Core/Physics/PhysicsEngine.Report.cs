@@ -120,13 +120,12 @@ public sealed partial class PhysicsEngine
     }
 
     private ResolveResult Reported(
-        scoped ref Neighbourhood lands, Vector3 currentPos, uint currentCellId, Vector3 delta, float stepUpHeight, in MovementOptions options, out MoveReport report)
+        ref Neighbourhood lands, Vector3 currentPos, uint currentCellId, Vector3 delta, float stepUpHeight, in MovementOptions options, out MoveReport report)
     {
         var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
-        SurfaceContact wall = default;
-        query.Met = ref wall;
+        lands.Reporting = true;
         ResolveResult result = Move(ref query, in options, delta.Z);
-        report = Report(ref lands, in result, wall, in options);
+        report = Report(ref lands, in result, lands.Met, in options);
         return result;
     }
 

@@ -72,11 +72,6 @@ internal ref struct MoveQuery
     /// </summary>
     public bool Open;
 
-    /// <summary>
-    /// Where the wall a refusal or slide met is recorded (<see cref="Meet(SurfaceKind, uint)"/>), when the caller asked what the move
-    /// met; a null reference otherwise, and then nothing is written.
-    /// </summary>
-    public ref SurfaceContact Met;
 
     public MoveQuery(ref Neighbourhood lands, Vector3 position, uint cellId, Vector2 delta, float stepUp, ref readonly MovementOptions options)
     {
@@ -102,7 +97,6 @@ internal ref struct MoveQuery
     public readonly MoveQuery With(Vector3 position, uint cellId, Vector2 delta, float stepUp, ref readonly MovementOptions options)
     {
         var next = new MoveQuery(ref Lands, position, cellId, delta, stepUp, in options);
-        next.Met = ref Met;
         return next;
     }
 
@@ -110,7 +104,6 @@ internal ref struct MoveQuery
     public readonly MoveQuery Next(Vector3 position, uint cellId, Vector2 delta)
     {
         var next = new MoveQuery(ref Lands, position, cellId, delta, StepUp, in Options);
-        next.Met = ref Met;
         return next;
     }
 
@@ -118,9 +111,9 @@ internal ref struct MoveQuery
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Meet(SurfaceKind kind, uint id)
     {
-        if (!Unsafe.IsNullRef(ref Met))
+        if (Lands.Reporting)
         {
-            Met = new SurfaceContact(kind, id, default);
+            Lands.Met = new SurfaceContact(kind, id, default);
         }
     }
 

@@ -55,6 +55,15 @@ internal struct Neighbourhood
         return true;
     }
 
+    /// <summary>
+    /// Whether the caller asked what the move met: then the wall, shell, cylinder or mover that stops or slides the move is
+    /// recorded in <see cref="Met"/> (<see cref="MoveQuery.Meet(SurfaceKind, uint)"/>); otherwise nothing is written.
+    /// </summary>
+    public bool Reporting;
+
+    /// <summary>What stopped or slid the call's move, when <see cref="Reporting"/> (kind and id; the answer gives the normal).</summary>
+    public SurfaceContact Met;
+
     /// <summary>Lets go of the movers held for this call (<see cref="Meet"/>).</summary>
     public readonly void Release() => _call?.Release();
 
