@@ -25,6 +25,9 @@ public sealed class Pointer(PhysicsEngine engine, uint playerId = 0)
     /// <summary>The longest ray: 100 m.</summary>
     public const float MaxLength = 100f;
 
+    /// <summary>The shortest squared length of a direction measured as it is: below it the square has lost precision (or is 0).</summary>
+    private const float MinSquaredLength = 1e-30f;
+
     private readonly PhysicsEngine _engine = engine ?? throw new ArgumentNullException(nameof(engine));
     private readonly CastOptions _options = new(0f, CastFilter.None, playerId);
 
@@ -34,17 +37,21 @@ public sealed class Pointer(PhysicsEngine engine, uint playerId = 0)
     /// <summary>The first thing under the ray from <paramref name="eye"/> along <paramref name="direction"/>.</summary>
     /// <param name="eye">Where the ray starts, world metres.</param>
     /// <param name="eyeCellId">The cell it starts in, <c>0xXXYYCCCC</c> (the camera's <see cref="CameraView.EyeCellId"/>; outdoors any outdoor number, 0 included).</param>
-    /// <param name="direction">Its direction, any length above 0.</param>
+    /// <param name="direction">Its direction, any length above 0 (each component finite, one not zero; from float.Epsilon to float.MaxValue).</param>
     /// <exception cref="ArgumentException">The direction is zero or not finite, or the engine refuses the cast.</exception>
     public PointerHit Cast(Vector3 eye, uint eyeCellId, Vector3 direction)
     {
-        float length = direction.Length();
-        if (!(length > 0f && float.IsFinite(length)))
+        float largest = MathF.Max(MathF.Abs(direction.X), MathF.Max(MathF.Abs(direction.Y), MathF.Abs(direction.Z)));
+        if (!(float.IsFinite(direction.X) && float.IsFinite(direction.Y) && float.IsFinite(direction.Z) && largest > 0f))
         {
             throw new ArgumentException($"direction {direction} must be finite and not zero.", nameof(direction));
         }
 
-        Vector3 end = eye + (direction * (MaxLength / length));
+        // A direction whose squared length over- or underflows a float (longer than about 1e19, or shorter than about
+        // 1e-15) is measured once scaled so its largest component is 1; any other is measured as it is.
+        float squared = direction.LengthSquared();
+        Vector3 along = squared is >= MinSquaredLength and <= float.MaxValue ? direction : direction / largest;
+        Vector3 end = eye + (along * (MaxLength / along.Length()));
         CastHit hit = _engine.Cast(eye, eyeCellId, end, in _options);
         return new PointerHit(hit.Hit, hit.Point, hit.Fraction * MaxLength, hit.Normal, hit.Kind, hit.Id, hit.CellId);
     }

@@ -69,8 +69,8 @@ public sealed partial class PhysicsEngine
     /// <param name="stepUpHeight">Highest rise one move (one sub-step when sweeping) may climb, metres, ≥ 0.</param>
     /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
     /// <param name="moverId">The id of the mover that moves, or 0.</param>
-    /// <param name="touched">Where the ids of the movers touched are written (in the order the committed state files them near the move: the same for the same state and call).</param>
-    /// <param name="touchedCount">How many movers were touched; when more than <paramref name="touched"/> holds, the first that fit are written.</param>
+    /// <param name="touched">Where the ids of the movers touched are written, in the order the line from the start to the answer first touches them (one overlapped at the start first, the one that stopped the move last; equal fractions in the order the committed state files them): the same for the same state and call.</param>
+    /// <param name="touchedCount">How many movers were touched; when more than <paramref name="touched"/> holds, the first touched that fit are written (at most 64).</param>
     /// <param name="report">What the move met.</param>
     /// <exception cref="ArgumentException">As the four-argument call.</exception>
     public ResolveResult Resolve(

@@ -70,12 +70,15 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
     /// </summary>
     private ResolveResult Air(ref MoveQuery q, float dz)
     {
-        MovementOptions air = q.Options with { StepDownHeight = 0f };
         float step = MathF.Min(q.StepUp, PhysicsConstants.AirStepUp);
         float length = MathF.Sqrt(q.Delta.LengthSquared() + (dz * dz));
-        int steps = q.Options.SweepStepLength is float sweep && length > sweep
-            ? (int)Math.Min(Math.Ceiling(length / (double)sweep), PhysicsConstants.MaxSweepSteps)
-            : 1;
+        double wanted = q.Options.SweepStepLength is float sweep && length > sweep ? Math.Ceiling(length / (double)sweep) : 1d;
+        int steps = (int)Math.Min(wanted, PhysicsConstants.MaxSweepSteps);
+
+        // Each sub-step is one sweep: beyond the most sub-steps (each longer than the sweep) its move across is not cut
+        // into sub-steps again, so a move through the air takes at most MaxSweepSteps sub-steps, not their square.
+        MovementOptions options = wanted > PhysicsConstants.MaxSweepSteps ? q.Options with { SweepStepLength = float.MaxValue } : q.Options;
+        MovementOptions air = options with { StepDownHeight = 0f };
         Vector2 across = q.Delta / steps;
         float up = dz / steps;
         var at = new ResolveResult(q.Position, q.CellId, false);
@@ -99,9 +102,9 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
             // Falling, the move across steps down as far as this sub-step falls: it lands on the ground under its end
             // within that depth (or under its footprint), else it is that much lower, over the cell whose surface is below.
             // (Two ground tolerances more: lowered by the fall, feet that close to the ground would be standing on it.)
-            MovementOptions fall = up < 0f && !landed ? q.Options with { StepDownHeight = -up + (2f * PhysicsConstants.GroundTolerance) } : air;
+            MovementOptions fall = up < 0f && !landed ? options with { StepDownHeight = -up + (2f * PhysicsConstants.GroundTolerance) } : air;
             MoveQuery move = landed
-                ? q.With(at.Position, at.CellId, across, q.StepUp, in q.Options)
+                ? q.With(at.Position, at.CellId, across, q.StepUp, in options)
                 : q.With(at.Position, at.CellId, across, step, in fall);
             float before = at.Position.Z;
             ResolveResult moved = Walk(ref move);

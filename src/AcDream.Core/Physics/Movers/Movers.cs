@@ -11,7 +11,7 @@ public enum DoorState : byte
     /// <summary>Ethereal: it blocks nothing; a move through it records the touch.</summary>
     Open,
 
-    /// <summary>Told to close, but something still overlaps it: Ethereal, re-checked at every <see cref="Movers.Commit"/>.</summary>
+    /// <summary>Told to close, not yet solid: Ethereal until the first <see cref="Movers.Commit"/> at which nothing overlaps it (until that commit even with nothing in it).</summary>
     Closing,
 }
 
@@ -187,7 +187,7 @@ public sealed class Movers
         }
     }
 
-    /// <summary>Where a door is: as committed, or as it will be at the next commit for a change not yet committed.</summary>
+    /// <summary>Where a door is after the changes made so far, committed or not (moves meet the state last committed): Closing from <see cref="Close"/> to the commit that makes it solid.</summary>
     /// <exception cref="ArgumentException">The id is not a registered door.</exception>
     public DoorState GetDoorState(uint doorId)
     {

@@ -5,12 +5,17 @@ namespace AcDream.Core.Physics;
 /// <summary>The movers a call's move touched, blocking or not, for the caller that asks (a pass after the move).</summary>
 internal static class Touches
 {
+    /// <summary>Most touches one call writes, in order (their fractions on the stack, 4 bytes each): 64; more are only counted.</summary>
+    public const int MaxWritten = 64;
+
     /// <summary>
     /// Writes into <paramref name="touched"/> the ids of the movers met (not the mover itself, not one both Ethereal and
     /// IgnoreCollisions) whose walls the disc of the body (or a point) grown by <see cref="PhysicsConstants.TouchReach"/>
     /// meets on the straight line from <paramref name="start"/> to the answer, over the height from the lower feet to the
     /// higher head (a point: to its step up), and <paramref name="stoppedBy"/> (a point's sub-step refused before the
-    /// mover it would cross stops short of it); how many there are.
+    /// mover it would cross stops short of it); how many there are. They are written in the order the line first touches
+    /// them (one it overlaps at its start first, the one that stopped it short last; equal fractions in the order the
+    /// committed state files them), the first that fit (at most <see cref="MaxWritten"/>).
     /// </summary>
     public static int Along(WorldFrame frame, ref Neighbourhood lands, Vector3 start, uint cellId, in ResolveResult result, float stepUp, MoverBody? body, uint stoppedBy, Span<uint> touched)
     {
@@ -22,6 +27,7 @@ internal static class Touches
         float zHigh = MathF.Max(start.Z, result.Position.Z) + MathF.Max(body?.Height ?? stepUp, PhysicsConstants.TouchReach);
         var move = new BodyMove(p0, p1 - p0, radius, radius, 0f, zLow, zHigh);
         Vector2 lo = Vector2.Min(p0, p1) - new Vector2(radius), hi = Vector2.Max(p0, p1) + new Vector2(radius);
+        Span<float> fractions = stackalloc float[Math.Min(touched.Length, MaxWritten)];
         int count = 0;
         for (Neighbourhood.MoverCursor near = lands.MoversNear(x, y, new WallBox(lo, hi, zLow, zHigh)); near.MoveNext();)
         {
@@ -31,25 +37,42 @@ internal static class Touches
             if (hit.T < 1f || hit.Depth > 0f)
             {
                 stoppedBy = movers.Ids[j] == stoppedBy ? 0 : stoppedBy; // named here
-                if (count < touched.Length)
-                {
-                    touched[count] = movers.Ids[j];
-                }
-
-                count++;
+                Put(touched, fractions, count++, movers.Ids[j], hit.Depth > 0f ? 0f : hit.T);
             }
         }
 
         if (stoppedBy != 0)
         {
-            if (count < touched.Length)
-            {
-                touched[count] = stoppedBy;
-            }
-
-            count++;
+            Put(touched, fractions, count++, stoppedBy, 1f);
         }
 
         return count;
+    }
+
+    /// <summary>
+    /// Puts <paramref name="id"/>, first touched at fraction <paramref name="t"/>, among the <paramref name="counted"/> touches
+    /// so far (those written: <paramref name="ids"/> with their <paramref name="fractions"/>, in order), after every one
+    /// touched no later; dropped when the span is full of earlier ones.
+    /// </summary>
+    private static void Put(Span<uint> ids, Span<float> fractions, int counted, uint id, float t)
+    {
+        int written = Math.Min(counted, fractions.Length);
+        int at = written;
+        while (at > 0 && fractions[at - 1] > t)
+        {
+            at--;
+        }
+
+        if (at == fractions.Length)
+        {
+            return;
+        }
+
+        for (int k = Math.Min(written, fractions.Length - 1); k > at; k--)
+        {
+            (ids[k], fractions[k]) = (ids[k - 1], fractions[k - 1]);
+        }
+
+        (ids[at], fractions[at]) = (id, t);
     }
 }
