@@ -22,7 +22,8 @@ internal readonly record struct BodyMove(Vector2 P, Vector2 D, float Radius, flo
 /// <summary>
 /// The running answer of a sweep: the earliest contact so far (<see cref="T"/>, the fraction of the move,
 /// 1 for none; <see cref="Normal"/>, the wall's unit normal seen from above, pointing at the body) and the
-/// deepest overlap at the start (<see cref="Depth"/> metres, with <see cref="Outward"/>, the unit normal out of it).
+/// deepest overlap at the start (<see cref="Depth"/> metres, with <see cref="Outward"/>, the unit normal out of it, and
+/// <see cref="Lift"/>, how far the slide moves out of it besides).
 /// </summary>
 internal struct WallHit
 {
@@ -30,6 +31,13 @@ internal struct WallHit
     public Vector2 Normal;
     public float Depth;
     public Vector2 Outward;
+
+    /// <summary>
+    /// Where the deepest overlap is a mover's solid the body starts in or deep against (<see cref="MoverSolid"/>, which
+    /// then meets it at the start too): what the slide adds to the move past that contact, out of the solid by the sink,
+    /// so that the rounding of the answer does not sink the body deeper frame after frame; else zero.
+    /// </summary>
+    public Vector2 Lift;
 
     /// <summary>Whose walls are being swept now (set by the sweep before each cell's or object's walls).</summary>
     public WallSource Current;
@@ -55,12 +63,15 @@ internal struct WallHit
         }
     }
 
-    /// <summary>An overlap of <paramref name="depth"/> metres at the start, out along <paramref name="outward"/>: kept when deeper (ties as <see cref="Contact"/>).</summary>
-    public void Overlap(float depth, Vector2 outward)
+    /// <summary>
+    /// An overlap of <paramref name="depth"/> metres at the start, out along <paramref name="outward"/> (with the
+    /// <paramref name="lift"/> of a solid the body is inside): kept when deeper (ties as <see cref="Contact"/>).
+    /// </summary>
+    public void Overlap(float depth, Vector2 outward, Vector2 lift = default)
     {
         if (depth > Depth || (depth == Depth && depth > 0f && Precedes(outward, Outward)))
         {
-            (Depth, Outward, DeepSource) = (depth, outward, Current);
+            (Depth, Outward, DeepSource, Lift) = (depth, outward, Current, lift);
         }
     }
 

@@ -64,13 +64,13 @@ internal static class BodySweep
             }
 
             float t = 1f;
-            Vector2 normal = default;
+            Vector2 normal = default, lift = default; // (lift: out of a mover's solid the body starts in, see WallHit.Lift)
             WallSource wall = default;
             if (contact < PhysicsConstants.MaxBodyContacts)
             {
                 var hit = WallHit.None;
                 walls.Sweep(move.At(position, rest), ref hit);
-                (t, normal, wall) = (hit.T, hit.Normal, hit.Source);
+                (t, normal, wall, lift) = (hit.T, hit.Normal, hit.Source, hit.Lift);
                 if (contact == 0 && hit.Depth > sink && hit.Depth < 4f * sink)
                 {
                     // Sunk into the skin by rounding: back out to the contact radius, unless that pushes
@@ -129,7 +129,7 @@ internal static class BodySweep
             else
             {
                 unprojected = rest;
-                rest = Along(rest, normal);
+                rest = Along(rest, normal) + lift;
                 if (contact > 0 && Blocked(rest, previous, d))
                 {
                     break;

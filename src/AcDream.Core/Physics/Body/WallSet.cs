@@ -241,7 +241,7 @@ internal ref struct WallSet
             CellWalls walls = movers.Walls[near.Current];
             if (lands.Blocks(near.Current) && !Clears(walls, near.Offset, in move))
             {
-                BodySweep.SweepWalls(walls, near.Offset, lo - near.Offset, hi - near.Offset, in move, ref hit);
+                MoverSolid.Sweep(walls, near.Offset, lo - near.Offset, hi - near.Offset, in move, ref hit);
                 if (hit.T < 1f || hit.Depth > 0f)
                 {
                     return true;
@@ -416,7 +416,7 @@ internal ref struct WallSet
             {
                 MoverFrame movers = _lands.Movers!;
                 _hit.Current = new WallSource(SurfaceKind.Mover, movers.Ids[index]);
-                BodySweep.SweepWalls(movers.Walls[index], offset, boxLo, boxHi, _move with { ZLow = _move.ZLow - moverDrop }, ref _hit);
+                MoverSolid.Sweep(movers.Walls[index], offset, boxLo, boxHi, _move with { ZLow = _move.ZLow - moverDrop }, ref _hit);
                 return true;
             }
 

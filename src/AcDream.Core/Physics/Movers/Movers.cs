@@ -173,9 +173,9 @@ public sealed class Movers
     }
 
     /// <summary>
-    /// Closes a door: solid at the first <see cref="Commit"/> at which no other mover's cylinder overlaps its walls; until
-    /// then it stays Ethereal and is re-checked at every commit (the game's door hold: a door never closes on someone
-    /// standing in it).
+    /// Closes a door: solid at the first <see cref="Commit"/> at which no other mover's cylinder overlaps its walls or stands
+    /// inside its slab; until then it stays Ethereal and is re-checked at every commit (the game's door hold: a door never
+    /// closes on someone standing in it).
     /// </summary>
     /// <exception cref="ArgumentException">The id is not a registered door.</exception>
     public void Close(uint doorId)
@@ -425,7 +425,7 @@ public sealed class Movers
         }
     }
 
-    /// <summary>Doors told to close become solid once no other mover's cylinder overlaps their walls in the state about to be published.</summary>
+    /// <summary>Doors told to close become solid once no other mover's cylinder overlaps their walls or stands inside them (<see cref="MoverSolid"/>) in the state about to be published.</summary>
     private void HoldDoors(MoverFrame f)
     {
         for (int i = 0; i < f.Count; i++)
@@ -459,7 +459,7 @@ public sealed class Movers
                 {
                     var still = new BodyMove(c.A + offset, Vector2.Zero, c.Radius, c.Radius, 0f, c.ZMin, c.ZMax);
                     var hit = WallHit.None;
-                    BodySweep.SweepWalls(walls, Vector2.Zero, still.P - new Vector2(c.Radius), still.P + new Vector2(c.Radius), in still, ref hit);
+                    MoverSolid.Sweep(walls, Vector2.Zero, still.P - new Vector2(c.Radius), still.P + new Vector2(c.Radius), in still, ref hit); // (its faces, or wholly inside the slab)
                     if (hit.Depth > 0f)
                     {
                         return true;

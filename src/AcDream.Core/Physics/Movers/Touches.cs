@@ -33,7 +33,7 @@ internal static class Touches
         {
             int j = near.Current;
             var hit = WallHit.None;
-            BodySweep.SweepWalls(movers.Walls[j], near.Offset, lo - near.Offset, hi - near.Offset, in move, ref hit);
+            MoverSolid.Sweep(movers.Walls[j], near.Offset, lo - near.Offset, hi - near.Offset, in move, ref hit);
             if (hit.T < 1f || hit.Depth > 0f)
             {
                 stoppedBy = movers.Ids[j] == stoppedBy ? 0 : stoppedBy; // named here
