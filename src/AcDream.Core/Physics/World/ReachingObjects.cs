@@ -31,6 +31,12 @@ internal static class ReachingObjects
         var found = new List<ReachingObject>();
         for (int d = 0; d < cells.Length; d++)
         {
+            if (standing.Count == 0)
+            {
+                result[d] = []; // (no objects in cells: nothing to find)
+                continue;
+            }
+
             found.Clear();
             Space3 space = Space(cells[d]);
             foreach (ReachingObject o in standing)
