@@ -26,8 +26,62 @@ internal static partial class WorldCast
         }
 
         SurfaceKind wall = o.IsBuilding ? SurfaceKind.BuildingShell : SurfaceKind.ObjectWall;
-        Walls(ref ray, o.Walls, offset, in box, wall, wall, SurfaceKind.Cylinder, o.ObjectId);
-        Floors(ref ray, o.Floors, offset, in box, SurfaceKind.ObjectFloor, o.ObjectId);
+        ObjectWalls(ref ray, o, offset, in box, wall);
+        ObjectFloors(ref ray, o, offset, in box);
+    }
+
+    /// <summary>An object's wall polygons (at their exact vertices, <see cref="ObjectSurface.Exact"/>) and cylinders whose bounds meet the box.</summary>
+    [SkipLocalsInit] // the vertex buffer is written before it is read
+    private static void ObjectWalls(ref SweptSphere ray, ObjectSurface o, D3 offset, in Box box, SurfaceKind kind)
+    {
+        WallPolygon[] polygons = o.Walls.Polygons;
+        WallExtent[] extents = o.Walls.Extents;
+        D3[] vertices = o.Exact.Walls;
+        System.Runtime.Intrinsics.Vector128<float> query = WallExtent.Query(box.Lo, box.Hi);
+        Span<D3> v = stackalloc D3[PhysicsConstants.MaxWallPolygonVertices];
+        D3 rel = offset - ray.Start;
+        for (int i = 0; i < polygons.Length; i++)
+        {
+            if (!extents[i].Meets(query, box.ZLo, box.ZHi))
+            {
+                continue;
+            }
+
+            ref readonly WallPolygon w = ref polygons[i];
+            if (w.Radius > 0f)
+            {
+                ray.Cylinder(w.A.X + rel.X, w.A.Y + rel.Y, w.Radius, w.ZMin + rel.Z, w.ZMax + rel.Z, SurfaceKind.Cylinder, o.ObjectId);
+                continue;
+            }
+
+            for (int k = 0; k < w.Count; k++)
+            {
+                v[k] = vertices[w.First + k] + rel;
+            }
+
+            ray.Polygon(v[..w.Count], kind, o.ObjectId, kind);
+        }
+    }
+
+    /// <summary>An object's floor triangles whose bounds meet the box, at their exact corners (<see cref="ObjectSurface.Exact"/>).</summary>
+    [SkipLocalsInit]
+    private static void ObjectFloors(ref SweptSphere ray, ObjectSurface o, D3 offset, in Box box)
+    {
+        ReadOnlySpan<FloorTriangle> floors = o.Floors;
+        D3[] corners = o.Exact.Floors;
+        Span<D3> v = stackalloc D3[3];
+        D3 rel = offset - ray.Start;
+        for (int i = 0; i < floors.Length; i++)
+        {
+            ref readonly FloorTriangle f = ref floors[i];
+            if (!box.Meets(f.Min, f.Max, f.ZMin, f.ZMax))
+            {
+                continue;
+            }
+
+            (v[0], v[1], v[2]) = (corners[3 * i] + rel, corners[(3 * i) + 1] + rel, corners[(3 * i) + 2] + rel);
+            ray.Polygon(v, SurfaceKind.ObjectFloor, o.ObjectId, SurfaceKind.ObjectFloor);
+        }
     }
 
     /// <summary>Wall polygons and cylinders whose bounds meet the box.</summary>
