@@ -45,6 +45,7 @@ public sealed partial class ObjectSurface
         Walls = CellWalls.Build(what, placed.Polygons, [], placed.Cylinders, "gfxObj");
         (FloorMin, FloorMax) = CellSurface.FloorBounds(_floors);
         (BoundsMin, BoundsMax) = placed.Bounds();
+        Exact = ExactPolygons.Build(placed.Polygons, placed.Exact, Walls, _floors);
     }
 
     /// <summary>The GfxObj or Setup id of the object (for a building, its <see cref="BuildingInfo.ModelId"/>).</summary>
@@ -70,6 +71,9 @@ public sealed partial class ObjectSurface
 
     /// <summary>The walkable triangles, landblock-local, as the floor queries sample them.</summary>
     internal ReadOnlySpan<FloorTriangle> Floors => _floors;
+
+    /// <summary>Its walls' and floors' vertices placed in double precision, as a cast meets them.</summary>
+    internal ExactPolygons Exact { get; }
 
     /// <summary>XY bounds of the floors, grown by the edge tolerance; empty when there are none.</summary>
     internal Vector2 FloorMin { get; }

@@ -11,7 +11,8 @@ namespace AcDream.Core.Physics;
 /// <remarks>
 /// <para>
 /// In a cell: the shapes of the cell, of every cell reached from it through portals whose bounds meet the rest of the
-/// path (grown by the radius), and of the objects standing in them; near a portal to the outdoors, also the outdoor
+/// path (grown by the radius), of the objects standing in them and of those standing in other cells that reach into
+/// them (<see cref="LandblockEntry.Reaching"/>); near a portal to the outdoors, also the outdoor
 /// objects and the walls of the building's cells within the radius of that portal (a shell's door frame); the movers
 /// near. The centre leaves the cell through the first portal its segment passes out through: on into the neighbour,
 /// or outdoors; a portal to a cell that is not loaded stops it as a wall.
@@ -25,7 +26,7 @@ namespace AcDream.Core.Physics;
 /// loaded (or off the world) stops the cast where it begins.
 /// </para>
 /// </remarks>
-internal static class WorldCast
+internal static partial class WorldCast
 {
     private const float Size = PhysicsConstants.LandblockSize;
     private const double Column = PhysicsConstants.CellSize;
@@ -149,6 +150,13 @@ internal static class WorldCast
             for (int i = 0; i < count; i++)
             {
                 Cell(ref ray, entry.Cells[cells[i]], offset, in box);
+                foreach (ReachingObject o in entry.Reaching[cells[i]])
+                {
+                    if (!cells[..count].Contains(o.Cell))
+                    {
+                        Object(ref ray, o.Object, offset, in box); // standing in a cell not listed, rising into this one
+                    }
+                }
             }
 
             if (outdoors)
@@ -295,89 +303,6 @@ internal static class WorldCast
                     (cy, nextY) = (cy + stepY, nextY + deltaY);
                 }
             }
-        }
-
-        /// <summary>A cell's walls (ceilings named as such), floors and the objects standing in it, within the box.</summary>
-        private void Cell(ref SweptSphere ray, CellSurface cell, D3 offset, in Box box)
-        {
-            Walls(ref ray, cell.Walls, offset, in box, SurfaceKind.CellWall, SurfaceKind.CellCeiling, SurfaceKind.CellWall, cell.CellId);
-            Floors(ref ray, cell.Floors, offset, in box, SurfaceKind.CellFloor, cell.CellId);
-            foreach (ObjectSurface o in cell.Objects)
-            {
-                Object(ref ray, o, offset, in box);
-            }
-        }
-
-        private void Object(ref SweptSphere ray, ObjectSurface o, D3 offset, in Box box)
-        {
-            Vector3 lo = o.BoundsMin, hi = o.BoundsMax;
-            if (!box.Meets(new Vector2(lo.X, lo.Y), new Vector2(hi.X, hi.Y), lo.Z, hi.Z))
-            {
-                return;
-            }
-
-            SurfaceKind wall = o.IsBuilding ? SurfaceKind.BuildingShell : SurfaceKind.ObjectWall;
-            Walls(ref ray, o.Walls, offset, in box, wall, wall, SurfaceKind.Cylinder, o.ObjectId);
-            Floors(ref ray, o.Floors, offset, in box, SurfaceKind.ObjectFloor, o.ObjectId);
-        }
-
-        /// <summary>Wall polygons and cylinders whose bounds meet the box.</summary>
-        private static void Walls(ref SweptSphere ray, CellWalls walls, D3 offset, in Box box, SurfaceKind kind, SurfaceKind facingDown, SurfaceKind round, uint id)
-        {
-            WallPolygon[] polygons = walls.Polygons;
-            WallExtent[] extents = walls.Extents;
-            Vector3[] vertices = walls.Vertices;
-            System.Runtime.Intrinsics.Vector128<float> query = WallExtent.Query(box.Lo, box.Hi);
-            Span<D3> v = stackalloc D3[PhysicsConstants.MaxWallPolygonVertices];
-            D3 rel = offset - ray.Start;
-            for (int i = 0; i < polygons.Length; i++)
-            {
-                if (!extents[i].Meets(query, box.ZLo, box.ZHi))
-                {
-                    continue;
-                }
-
-                ref readonly WallPolygon w = ref polygons[i];
-                if (w.Radius > 0f)
-                {
-                    ray.Cylinder(w.A.X + rel.X, w.A.Y + rel.Y, w.Radius, w.ZMin + rel.Z, w.ZMax + rel.Z, round, id);
-                    continue;
-                }
-
-                for (int k = 0; k < w.Count; k++)
-                {
-                    Vector3 p = vertices[w.First + k];
-                    v[k] = new D3(p.X + rel.X, p.Y + rel.Y, p.Z + rel.Z);
-                }
-
-                ray.Polygon(v[..w.Count], kind, id, facingDown);
-            }
-        }
-
-        /// <summary>Floor triangles whose bounds meet the box, each at the Z its plane gives its corners (as a mover stands on it).</summary>
-        private static void Floors(ref SweptSphere ray, ReadOnlySpan<FloorTriangle> floors, D3 offset, in Box box, SurfaceKind kind, uint id)
-        {
-            Span<D3> v = stackalloc D3[3];
-            D3 rel = offset - ray.Start;
-            foreach (ref readonly FloorTriangle f in floors)
-            {
-                if (!box.Meets(f.Min, f.Max, f.ZMin, f.ZMax))
-                {
-                    continue;
-                }
-
-                v[0] = Corner(in f, f.A, rel);
-                v[1] = Corner(in f, f.B, rel);
-                v[2] = Corner(in f, f.C, rel);
-                ray.Polygon(v, kind, id, kind);
-            }
-        }
-
-        private static D3 Corner(in FloorTriangle f, Vector2 p, D3 rel)
-        {
-            double z = f.PlaneZ + ((double)f.Gradient.X * ((double)p.X - f.PlanePoint.X)) + ((double)f.Gradient.Y * ((double)p.Y - f.PlanePoint.Y));
-            z = Math.Clamp(z, f.ZMin, f.ZMax);
-            return new D3(p.X + rel.X, p.Y + rel.Y, z + rel.Z);
         }
 
         /// <summary>

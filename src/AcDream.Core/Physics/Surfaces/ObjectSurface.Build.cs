@@ -109,10 +109,14 @@ public sealed partial class ObjectSurface
     private static string Name(uint id) => $"object 0x{id:X8}";
 
 
-    /// <summary>A rotation and translation, the rotation a unit quaternion.</summary>
-    private readonly record struct Rigid(Quaternion Rotation, Vector3 Origin)
+    /// <summary>
+    /// A rotation and translation, the rotation a unit quaternion: in floats (<see cref="Rotation"/>, normalised in double
+    /// and rounded) for the placed vertices the movers meet, and in double (<see cref="Exact"/>, normalised in double)
+    /// for the exact ones a cast meets.
+    /// </summary>
+    private readonly record struct Rigid(Quaternion Rotation, Vector3 Origin, Unit Exact)
     {
-        public static Rigid Identity => new(Quaternion.Identity, Vector3.Zero);
+        public static Rigid Identity => new(Quaternion.Identity, Vector3.Zero, new Unit(0, 0, 0, 1));
 
         public static Rigid Of(string name, Frame? frame, string argument)
         {
@@ -126,11 +130,28 @@ public sealed partial class ObjectSurface
                 throw new ArgumentException($"{name}: frame ({frame.Origin}, {frame.Orientation}) is not a placement (non-finite, or an orientation shorter than 1e-6).", argument);
             }
 
-            return new Rigid(unit, frame.Origin);
+            Quaternion q = frame.Orientation;
+            double length = Math.Sqrt(((double)q.X * q.X) + ((double)q.Y * q.Y) + ((double)q.Z * q.Z) + ((double)q.W * q.W));
+            return new Rigid(unit, frame.Origin, new Unit(q.X / length, q.Y / length, q.Z / length, q.W / length));
         }
 
         public Vector3 Apply(Vector3 v) => Origin + Vector3.Transform(v, Rotation);
+
+        /// <summary><paramref name="v"/> placed in double precision: v + 2w(q × v) + 2q × (q × v), then moved by the origin.</summary>
+        public D3 ApplyExact(D3 v)
+        {
+            (double qx, double qy, double qz, double qw) = (Exact.X, Exact.Y, Exact.Z, Exact.W);
+            double cx = (qy * v.Z) - (qz * v.Y), cy = (qz * v.X) - (qx * v.Z), cz = (qx * v.Y) - (qy * v.X);
+            double ccx = (qy * cz) - (qz * cy), ccy = (qz * cx) - (qx * cz), ccz = (qx * cy) - (qy * cx);
+            return new D3(
+                Origin.X + (v.X + (2 * ((qw * cx) + ccx))),
+                Origin.Y + (v.Y + (2 * ((qw * cy) + ccy))),
+                Origin.Z + (v.Z + (2 * ((qw * cz) + ccz))));
+        }
     }
+
+    /// <summary>A unit quaternion in double precision.</summary>
+    private readonly record struct Unit(double X, double Y, double Z, double W);
 
     /// <summary>The placed physics polygons (each with its winding normal) and cylinders of one object, landblock-local.</summary>
     private sealed class Placed(string name, Rigid frame)
@@ -144,6 +165,11 @@ public sealed partial class ObjectSurface
                 moved.Polygons.Add((id, Array.ConvertAll(v, p => p + offset), n));
             }
 
+            foreach (D3[] v in Exact)
+            {
+                moved.Exact.Add(Array.ConvertAll(v, p => p + new D3(offset.X, offset.Y, offset.Z)));
+            }
+
             foreach ((Vector3 b, float r, float h) in Cylinders)
             {
                 moved.Cylinders.Add((b + offset, r, h));
@@ -153,6 +179,9 @@ public sealed partial class ObjectSurface
         }
 
         public List<(ushort Id, Vector3[] Vertices, Vector3 Normal)> Polygons { get; } = [];
+
+        /// <summary>The same polygons' vertices placed in double precision (<see cref="Rigid.ApplyExact"/>), in the same order.</summary>
+        public List<D3[]> Exact { get; } = [];
 
         public List<(Vector3 Base, float Radius, float Height)> Cylinders { get; } = [];
 
@@ -175,6 +204,7 @@ public sealed partial class ObjectSurface
                 }
 
                 var v = new Vector3[ids.Count];
+                var exact = new D3[ids.Count];
                 for (int i = 0; i < v.Length; i++)
                 {
                     if (ids[i] < 0 || !vertices.TryGetValue((ushort)ids[i], out SWVertex? vertex) || vertex is null)
@@ -188,9 +218,12 @@ public sealed partial class ObjectSurface
                     }
 
                     v[i] = Checked(frame.Apply(partFrame.Apply(vertex.Origin * scale)), $"{what}: vertex {ids[i]} (physics polygon {key})");
+                    Vector3 o = vertex.Origin;
+                    exact[i] = frame.ApplyExact(partFrame.ApplyExact(new D3((double)o.X * scale.X, (double)o.Y * scale.Y, (double)o.Z * scale.Z)));
                 }
 
                 Polygons.Add((key, v, Geometry.NewellNormal(v, v[0])));
+                Exact.Add(exact);
             }
         }
 

@@ -55,6 +55,7 @@ internal sealed class LandblockEntry
         CellGroups = Groups(PortalTargets, out int outdoors);
         MetOutdoors = Array.ConvertAll(CellGroups, g => g == outdoors);
         CellWallBounds = Array.ConvertAll(cells, static c => c.WallBounds());
+        Reaching = ReachingObjects.Build(cells);
         var cellBoxes = new (Vector2 Min, Vector2 Max)[cells.Length];
         var outdoorCellBoxes = new (Vector2 Min, Vector2 Max)[cells.Length];
         Vector2 min = new(float.MaxValue), max = new(float.MinValue);
@@ -120,6 +121,9 @@ internal sealed class LandblockEntry
     /// are met only from inside.
     /// </summary>
     public bool[] MetOutdoors { get; }
+
+    /// <summary>Per cell, the objects standing in other cells that reach into its space (<see cref="ReachingObjects"/>).</summary>
+    public ReachingObject[][] Reaching { get; }
 
     /// <summary>Per cell, the bounds of its walls and its objects' walls (<see cref="CellSurface.WallBounds"/>), in one array.</summary>
     public WallBounds[] CellWallBounds { get; }
