@@ -13,46 +13,61 @@ internal sealed partial class MoverFrame
     /// <summary>Squares along an outdoor cell's side (12).</summary>
     public const int SquaresPerCell = (int)(PhysicsConstants.CellSize / PhysicsConstants.MoverGridCell);
 
-    /// <summary>Each cell with a mover filed: x · 2³² + y at the slot of its hash (linear probing; at least twice as many slots as movers); <see cref="long.MinValue"/>: empty.</summary>
-    public long[] FiledCells = [];
+    /// <summary>Each cell with a mover filed, at the slot of its hash (linear probing; at least twice as many slots as movers).</summary>
+    public FiledCell[] FiledCells = [];
 
-    /// <summary><see cref="SquaresPerCell"/> per slot of <see cref="FiledCells"/>, one per column c of the cell: bit r set when square (12·x + c, 12·y + r) has a mover filed.</summary>
-    public ushort[] FiledRows = [];
+    /// <summary>
+    /// A cell with a mover filed: its key, x · 2³² + y (<see cref="long.MinValue"/>: an empty slot), and for each column c
+    /// of its squares the rows with a mover filed (bit r: square (12·x + c, 12·y + r)), 16 bits a column, four columns a
+    /// word; 32 bytes, the key and its rows read together.
+    /// </summary>
+    public struct FiledCell
+    {
+        public long Key;
+        public ulong Rows0, Rows1, Rows2;
 
-    /// <summary>Fills <see cref="FiledCells"/> and <see cref="FiledRows"/> from the squares the movers are filed in (<see cref="SquareX"/>, <see cref="SquareY"/>); <paramref name="size"/>, a power of two, at least twice the movers.</summary>
+        public void Add(int c, int r)
+        {
+            ulong bit = 1UL << (((c & 3) * 16) + r);
+            switch (c >> 2)
+            {
+                case 0: Rows0 |= bit; break;
+                case 1: Rows1 |= bit; break;
+                default: Rows2 |= bit; break;
+            }
+        }
+    }
+
+    /// <summary>Fills <see cref="FiledCells"/> from the squares the movers are filed in (<see cref="SquareX"/>, <see cref="SquareY"/>); <paramref name="size"/>, a power of two, at least twice the movers.</summary>
     public void FileCells(int size)
     {
         if (FiledCells.Length < size)
         {
-            (FiledCells, FiledRows) = (new long[size], new ushort[size * SquaresPerCell]); // grown only
+            FiledCells = new FiledCell[size]; // grown only
         }
 
-        Array.Fill(FiledCells, long.MinValue);
-        int mask = FiledCells.Length - 1;
+        FiledCell[] cells = FiledCells;
+        Array.Fill(cells, new FiledCell { Key = long.MinValue });
+        int mask = cells.Length - 1;
         for (int i = 0; i < Count; i++)
         {
             int cx = CellOf(SquareX[i]), cy = CellOf(SquareY[i]);
             long key = Key(cx, cy);
             int at = CellHash(cx, cy) & mask;
-            while (FiledCells[at] != long.MinValue && FiledCells[at] != key)
+            while (cells[at].Key != long.MinValue && cells[at].Key != key)
             {
                 at = (at + 1) & mask; // (at most half the slots are used: an empty one comes)
             }
 
-            if (FiledCells[at] != key)
-            {
-                FiledCells[at] = key;
-                Array.Clear(FiledRows, at * SquaresPerCell, SquaresPerCell); // (a slot's rows are cleared when it is taken)
-            }
-
-            FiledRows[(at * SquaresPerCell) + SquareX[i] - (cx * SquaresPerCell)] |= (ushort)(1 << (SquareY[i] - (cy * SquaresPerCell)));
+            cells[at].Key = key;
+            cells[at].Add(SquareX[i] - (cx * SquaresPerCell), SquareY[i] - (cy * SquaresPerCell));
         }
     }
 
     /// <summary>The slot of cell (cx, cy) in <see cref="FiledCells"/>; −1 when no mover is filed in it.</summary>
     public int FiledSlot(int cx, int cy)
     {
-        long[] cells = FiledCells;
+        FiledCell[] cells = FiledCells;
         int mask = cells.Length - 1;
         if (mask < 0)
         {
@@ -62,12 +77,12 @@ internal sealed partial class MoverFrame
         long key = Key(cx, cy);
         for (int at = CellHash(cx, cy) & mask; ; at = (at + 1) & mask)
         {
-            if (cells[at] == key)
+            if (cells[at].Key == key)
             {
                 return at;
             }
 
-            if (cells[at] == long.MinValue)
+            if (cells[at].Key == long.MinValue)
             {
                 return -1;
             }
@@ -86,15 +101,19 @@ internal sealed partial class MoverFrame
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static int CellHash(int cx, int cy) => (int)(((uint)cx * 0x9E3779B1u) ^ ((uint)cy * 0x85EBCA77u));
 
-    /// <summary>The enumeration of <see cref="FiledIn"/>: cells with a mover filed, x then y; in each, its columns in the box, west to east, and their rows with one, south to north.</summary>
+    /// <summary>
+    /// The enumeration of <see cref="FiledIn"/>: cells with a mover filed, x then y; in each, its squares in the box with a
+    /// mover filed, column by column west to east, each column's rows south to north (four columns' rows a word: a cell
+    /// with none in the box is passed over in three tests).
+    /// </summary>
     public ref struct Filed
     {
         private const float Beyond = 2f * PhysicsConstants.LandblockSize; // a box is clamped to its landblock and its neighbours
 
         private readonly MoverFrame _frame;
         private readonly int _sx0, _sx1, _sy0, _sy1, _cx1, _cy0, _cy1;
-        private int _cx, _cy, _slot, _sx, _colLo, _colEnd, _rowLo, _sy, _at, _end;
-        private uint _rows, _bits;
+        private int _cx, _cy, _word, _colLo, _rowLo, _sx, _sy, _at, _end;
+        private ulong _bits, _next, _last;
 
         public Filed(MoverFrame frame, int x, int y, Vector2 lo, Vector2 hi)
         {
@@ -105,7 +124,7 @@ internal sealed partial class MoverFrame
             _sx1 = Square(x, Math.Clamp(hi.X + r, -Beyond, Beyond));
             _sy1 = Square(y, Math.Clamp(hi.Y + r, -Beyond, Beyond));
             (_cx, _cx1, _cy0, _cy1) = (CellOf(_sx0), CellOf(_sx1), CellOf(_sy0), CellOf(_sy1));
-            _cy = _cy0 - 1; // (no cell yet: the first MoveNext finds it)
+            (_cy, _word) = (_cy0 - 1, 3); // (no cell yet: the first MoveNext finds it)
         }
 
         public int Current { get; private set; }
@@ -127,15 +146,15 @@ internal sealed partial class MoverFrame
 
                 if (_bits != 0)
                 {
-                    _sy = _rowLo + BitOperations.TrailingZeroCount(_bits);
+                    int bit = BitOperations.TrailingZeroCount(_bits);
                     _bits &= _bits - 1;
+                    (_sx, _sy) = (_colLo + (4 * _word) + (bit >> 4), _rowLo + (bit & 15));
                     int bucket = f.Bucket(_sx, _sy);
                     (_at, _end) = (f.Heads[bucket], f.Heads[bucket + 1]);
                 }
-                else if (_sx < _colEnd)
+                else if (++_word < 3)
                 {
-                    _sx++;
-                    _bits = f.FiledRows[(_slot * SquaresPerCell) + _sx - _colLo] & _rows;
+                    (_bits, _next, _last) = (_next, _last, 0);
                 }
                 else if (!NextCell())
                 {
@@ -143,6 +162,14 @@ internal sealed partial class MoverFrame
                 }
             }
         }
+
+        /// <summary>The columns c0..c1 of word <paramref name="w"/> (columns 4w..4w + 3): a 16-bit lane each.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static ulong Columns(int c0, int c1, int w) => Lanes(c1 + 1 - (4 * w)) & ~Lanes(c0 - (4 * w));
+
+        /// <summary>The first <paramref name="n"/> lanes (clamped to 0–4) of a word.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static ulong Lanes(int n) => n <= 0 ? 0 : n >= 4 ? ulong.MaxValue : (1UL << (16 * n)) - 1;
 
         private bool NextCell()
         {
@@ -163,11 +190,18 @@ internal sealed partial class MoverFrame
                     continue; // no mover filed in this cell
                 }
 
-                (_slot, _colLo, _rowLo) = (slot, _cx * SquaresPerCell, _cy * SquaresPerCell);
+                (_colLo, _rowLo) = (_cx * SquaresPerCell, _cy * SquaresPerCell);
+                int c0 = Math.Max(_sx0, _colLo) - _colLo, c1 = Math.Min(_sx1, _colLo + SquaresPerCell - 1) - _colLo;
                 int r0 = Math.Max(_sy0, _rowLo) - _rowLo, r1 = Math.Min(_sy1, _rowLo + SquaresPerCell - 1) - _rowLo;
-                _rows = ((2u << r1) - 1) & ~((1u << r0) - 1); // rows r0..r1
-                (_sx, _colEnd) = (Math.Max(_sx0, _colLo), Math.Min(_sx1, _colLo + SquaresPerCell - 1));
-                _bits = _frame.FiledRows[(slot * SquaresPerCell) + _sx - _colLo] & _rows;
+                ulong rows = (ulong)(((2u << r1) - 1) & ~((1u << r0) - 1)) * 0x0001_0001_0001_0001UL; // rows r0..r1 of each of four columns
+                ref readonly FiledCell cell = ref _frame.FiledCells[slot];
+                (_bits, _next, _last) = (cell.Rows0 & rows & Columns(c0, c1, 0), cell.Rows1 & rows & Columns(c0, c1, 1), cell.Rows2 & rows & Columns(c0, c1, 2));
+                if ((_bits | _next | _last) == 0)
+                {
+                    continue; // none of its squares in the box has a mover filed
+                }
+
+                _word = 0;
                 return true;
             }
         }
