@@ -238,3 +238,92 @@ public class CastRayBenchmarks
         return sum;
     }
 }
+
+/// <summary>
+/// A long cast near many movers (issue 29): 256 rays 150 m east over one flat landblock, 1 m over the ground at y 71–73 m
+/// (the baseline: no movers), past 10,000 and 100,000 creatures (cylinders 0.3 × 1.8 m) standing over local 0..150 ×
+/// 0..150 m with none in y 69..75 m, and the same past 100,000 as a 0.3 m sphere and as a ray over their heads. Every cast
+/// meets nothing (the setup throws otherwise): it pays only for the movers near its path, of which there are none.
+/// </summary>
+[MemoryDiagnoser]
+public class CastMoverBenchmarks
+{
+    private const int Casts = 256;
+    private readonly Vector3[] _from = new Vector3[Casts], _to = new Vector3[Casts], _overFrom = new Vector3[Casts], _overTo = new Vector3[Casts];
+    private PhysicsEngine _none = null!, _ten = null!, _hundred = null!;
+
+    [GlobalSetup]
+    public void Setup()
+    {
+        (_none, _ten, _hundred) = (Flat(0), Flat(10_000), Flat(100_000));
+        Vector3 o = _none.GetLandblockOrigin(World.Holtburg);
+        var random = new Random(29);
+        for (int i = 0; i < Casts; i++)
+        {
+            float y = 71f + (random.NextSingle() * 2f);
+            (_from[i], _to[i]) = (o + new Vector3(1f, y, 51f), o + new Vector3(151f, y, 51f));
+            (_overFrom[i], _overTo[i]) = (_from[i] + new Vector3(0f, 0f, 2f), _to[i] + new Vector3(0f, 0f, 2f));
+        }
+
+        foreach (PhysicsEngine engine in new[] { _none, _ten, _hundred })
+        {
+            for (int i = 0; i < Casts; i++)
+            {
+                if (engine.Cast(_from[i], 0, _to[i], new CastOptions(0.3f)).Hit || engine.Cast(_overFrom[i], 0, _overTo[i], new CastOptions(0f)).Hit)
+                {
+                    throw new InvalidOperationException($"cast {i} met something: the path must be clear.");
+                }
+            }
+        }
+    }
+
+    /// <summary>One flat landblock (ground at 50 m) with <paramref name="count"/> creatures over local 0..150 × 0..150 m, none in y 69..75 m.</summary>
+    private static PhysicsEngine Flat(int count)
+    {
+        var engine = new PhysicsEngine(World.Holtburg);
+        engine.AddLandblock(World.Holtburg, new TerrainSurface(new byte[81], Enumerable.Repeat(50f, 256).ToArray(), World.Holtburg), []);
+        Vector3 o = engine.GetLandblockOrigin(World.Holtburg);
+        var random = new Random(5);
+        MoverShape creature = MoverShape.Cylinder(0.3f, 1.8f);
+        for (uint id = 1; id <= count;)
+        {
+            float x = random.NextSingle() * 150f, y = random.NextSingle() * 150f;
+            if (y < 69f || y > 75f)
+            {
+                engine.Movers.Add(id++, creature, o + new Vector3(x, y, 50f), (World.Holtburg & 0xFFFF0000u) | World.OutdoorCell(x, y), Quaternion.Identity, MoverState.Creature);
+            }
+        }
+
+        engine.Movers.Commit();
+        return engine;
+    }
+
+    [Benchmark(Baseline = true, OperationsPerInvoke = Casts)]
+    public float Ray_NoMovers() => Run(_none, _from, _to, 0f);
+
+    [Benchmark(OperationsPerInvoke = Casts)]
+    public float Ray_10000Movers() => Run(_ten, _from, _to, 0f);
+
+    [Benchmark(OperationsPerInvoke = Casts)]
+    public float Ray_100000Movers() => Run(_hundred, _from, _to, 0f);
+
+    [Benchmark(OperationsPerInvoke = Casts)]
+    public float Sphere_100000Movers() => Run(_hundred, _from, _to, 0.3f);
+
+    [Benchmark(OperationsPerInvoke = Casts)]
+    public float RayOverHeads_100000Movers() => Run(_hundred, _overFrom, _overTo, 0f);
+
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static float Run(PhysicsEngine engine, Vector3[] from, Vector3[] to, float radius)
+    {
+        var options = new CastOptions(radius);
+        float sum = 0f;
+        for (int i = 0; i < Casts; i++)
+        {
+            CastHit h = engine.Cast(from[i], 0, to[i], in options);
+            sum += h.Position.X + h.Position.Y;
+        }
+
+        return sum;
+    }
+}

@@ -228,6 +228,14 @@ public static class PhysicsConstants
     public const float SupportReach = 0.5f;
 
     /// <summary>
+    /// The largest radius a cast's sphere may have (<see cref="CastOptions.Radius"/>): 24 m, one outdoor cell. The spheres
+    /// cast are a camera's (0.3 m), a pointer's ray (0) or a body's (a metre or so); a sphere of this radius reaches into
+    /// at most the 4 × 4 terrain cells around each cell its centre crosses and, grown by it, a stretch of the path stays
+    /// within the landblocks next to the one it is in, so a cast's cost grows with the cells its path crosses.
+    /// </summary>
+    public const float MaxCastRadius = CellSize;
+
+    /// <summary>
     /// Cast (<see cref="PhysicsEngine.Cast"/>): how far outside a polygon's edges, metres, its face still stops a ray or
     /// sphere: 1 µm. Two polygons sharing an edge then leave no gap for a ray whose touch point rounds off both (double
     /// rounding of the inside test is about 1e-13 m in a landblock), and a point this far off an edge is well within

@@ -29,7 +29,8 @@ public sealed partial class PhysicsEngine
     /// cells; its centre passing in through a doorway goes on in that cell. In a cell it meets the cell's and its
     /// portal neighbours' polygons and objects (and, near a door, what stands outside the door); its centre passing out
     /// through a portal goes on beyond it. A start exactly on a surface moving off it (a ray up from the feet) is free of it. The movers committed last (<see cref="Movers"/>) are met by their walls, as
-    /// <paramref name="options"/> filters them; a mover whose walls lie more than a landblock from the start is not.
+    /// <paramref name="options"/> filters them; a mover in a landblock that is neither the start's nor next to it is not. Of
+    /// the movers it looks only at those filed near each stretch of its path.
     /// The cast reads each landblock of the 3 × 3 around its start once (one farther away, afresh each time), allocates
     /// nothing (after a thread's first cast with movers near, which makes the thread's record of them), and never
     /// changes the engine.
@@ -44,11 +45,12 @@ public sealed partial class PhysicsEngine
     /// <param name="from">The sphere's centre at the start, world metres.</param>
     /// <param name="fromCellId">The cell that holds <paramref name="from"/> (<c>0xXXYYCCCC</c>; an outdoor number, 0 included, is recomputed from the position). Not always the cell <c>Resolve</c> names for a mover whose start is above its feet: a body in the air over a floor opening is in the cell below, a pivot over its head may be in the cell above; cast from the feet to such a point first to find its cell.</param>
     /// <param name="to">The centre's end, world metres.</param>
-    /// <param name="options">The radius (metres, ≥ 0) and filters.</param>
+    /// <param name="options">The radius (metres, 0 to <see cref="PhysicsConstants.MaxCastRadius"/>) and filters.</param>
+    /// <exception cref="ArgumentOutOfRangeException">The radius is more than <see cref="PhysicsConstants.MaxCastRadius"/> (named <c>options</c>).</exception>
     /// <exception cref="ArgumentException">A position is not finite, the radius is negative or not finite, the cell id is not a cell of the world, or an indoor cell is not in its loaded landblock.</exception>
     public CastHit Cast(Vector3 from, uint fromCellId, Vector3 to, in CastOptions options)
     {
-        if (!(Geometry.IsFinite(from) && Geometry.IsFinite(to) && float.IsFinite(options.Radius) && options.Radius >= 0f && MoveQuery.IsCellOfTheWorld(fromCellId)))
+        if (!(Geometry.IsFinite(from) && Geometry.IsFinite(to) && options.Radius >= 0f && options.Radius <= PhysicsConstants.MaxCastRadius && MoveQuery.IsCellOfTheWorld(fromCellId)))
         {
             ThrowInvalidCast(from, fromCellId, to, options.Radius);
         }
@@ -65,7 +67,7 @@ public sealed partial class PhysicsEngine
 
         Vector3 move = to - from;
         float reach = MathF.Abs(move.X) + MathF.Abs(move.Y) + options.Radius + PhysicsConstants.TouchReach;
-        if (_movers.Any && lands.Meet(_movers, in _frame, from, fromCellId, reach, options.IgnoreId))
+        if (_movers.Any && lands.MeetAlong(_movers, in _frame, from, fromCellId, reach, options.IgnoreId))
         {
             return HeldCast(ref lands, in start, from, to, in options);
         }
@@ -104,6 +106,11 @@ public sealed partial class PhysicsEngine
         if (!(float.IsFinite(radius) && radius >= 0f))
         {
             throw new ArgumentException($"options.Radius {radius} must be finite and at least 0 metres.", "options");
+        }
+
+        if (radius > PhysicsConstants.MaxCastRadius)
+        {
+            throw new ArgumentOutOfRangeException("options", radius, $"options.Radius {radius} is more than the largest cast radius, {PhysicsConstants.MaxCastRadius} metres (PhysicsConstants.MaxCastRadius).");
         }
 
         throw new ArgumentException($"fromCellId 0x{cellId:X8} is not a cell of the world (0x0000..0x0040 outdoors, 0x0100..0xFFFD indoors, landblock X and Y below 0xFF).", "fromCellId");

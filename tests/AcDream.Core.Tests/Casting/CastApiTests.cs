@@ -63,18 +63,26 @@ public class CastApiTests(ITestOutputHelper output)
 
         foreach (var s in scenarios)
         {
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            for (int round = 0; round < Rounds; round++)
+            // Up to three counted passes: a per-cast allocation shows in every pass; the runtime's own one-time work (a
+            // late tier-up, seen once in a full-suite run on a loaded machine, as in BodyAllocationTests) in one at most,
+            // so the quietest pass must be 0 B.
+            var passes = new List<long>();
+            for (int pass = 0; pass < 3 && (passes.Count == 0 || passes[^1] != 0); pass++)
             {
-                for (int i = 0; i < s.From.Length; i++)
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                for (int round = 0; round < Rounds; round++)
                 {
-                    _ = engine.Cast(s.From[i], s.Cell[i], s.To[i], s.Options[i]);
+                    for (int i = 0; i < s.From.Length; i++)
+                    {
+                        _ = engine.Cast(s.From[i], s.Cell[i], s.To[i], s.Options[i]);
+                    }
                 }
+
+                passes.Add(GC.GetAllocatedBytesForCurrentThread() - before);
             }
 
-            long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
-            output.WriteLine($"[{frame}] {s.Name}: {Rounds * s.From.Length} casts, {bytes} bytes allocated");
-            bytes.Should().Be(0, $"{s.Name}: {Rounds * s.From.Length} casts");
+            output.WriteLine($"[{frame}] {s.Name}: {Rounds * s.From.Length} casts a pass, {string.Join(", ", passes)} bytes allocated");
+            passes.Min().Should().Be(0, $"{s.Name}: {Rounds * s.From.Length} casts a pass allocated {string.Join(", ", passes)} bytes in successive passes");
         }
 
         hits.Should().BeGreaterThan(300, "the casts meet things");

@@ -402,7 +402,7 @@ internal static partial class WorldCast
             ray.Polygon(v, SurfaceKind.Terrain, id, SurfaceKind.Terrain);
         }
 
-        /// <summary>The movers within the box that the cast's filters do not pass (itself is never listed).</summary>
+        /// <summary>The movers within the box that the cast's filters do not pass (itself is never listed): those filed in the squares near the box, not the call's.</summary>
         private void Movers(ref SweptSphere ray, ref Neighbourhood lands, LandblockEntry entry, D3 offset, in Box box)
         {
             if (lands.Movers is not MoverFrame movers)
@@ -411,7 +411,7 @@ internal static partial class WorldCast
             }
 
             Span<D3> v = stackalloc D3[PhysicsConstants.MaxWallPolygonVertices];
-            for (Neighbourhood.MoverCursor near = lands.MoversNear(entry.X, entry.Y, new WallBox(box.Lo, box.Hi, box.ZLo, box.ZHi)); near.MoveNext();)
+            for (Neighbourhood.AlongCursor near = lands.MoversAlong(entry.X, entry.Y, new WallBox(box.Lo, box.Hi, box.ZLo, box.ZHi)); near.MoveNext();)
             {
                 int j = near.Current;
                 ref readonly MoverState state = ref movers.States[j];

@@ -9,7 +9,7 @@ namespace AcDream.Core.Physics;
 /// global square, counting-sorted). Written only by <see cref="Movers.Commit"/> while no reader holds it
 /// (<see cref="Readers"/>), then published; a call holds the one it found at its start to its end.
 /// </summary>
-internal sealed class MoverFrame
+internal sealed partial class MoverFrame
 {
     /// <summary>How many calls hold this frame; the writer rewrites a frame only when none does and it is not current.</summary>
     public int Readers;

@@ -345,7 +345,6 @@ public sealed class Movers
         }
 
         size = f.Heads.Length - 1;
-
         (f.Mask, int[] heads) = (size - 1, f.Heads);
         Array.Clear(heads);
         if (_buckets.Length < n)
@@ -372,6 +371,7 @@ public sealed class Movers
             f.Order[--heads[buckets[i]]] = i; // from the back: each bucket's end becomes its start, in the movers' order
         }
 
+        f.FileCells(size);
         Occupy(f, 4 * size); // (each mover reaches into at most four landblocks)
         Array.Clear(f.ById);
         for (int i = 0; i < n; i++)

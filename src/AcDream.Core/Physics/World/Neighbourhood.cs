@@ -14,7 +14,7 @@ namespace AcDream.Core.Physics;
 /// length stays among them); a call reading one farther away (a swept move longer than that) reads it
 /// afresh each time.
 /// </remarks>
-internal struct Neighbourhood
+internal partial struct Neighbourhood
 {
     private readonly LandblockRegistry _registry;
     private Entries _entries;
@@ -36,22 +36,12 @@ internal struct Neighbourhood
     [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers committed
     public bool Meet(Movers movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self)
     {
-        frame.Locate(start, cellId, out int x, out int y, out Vector2 local);
-        Vector2 lo = local - new Vector2(reach), hi = local + new Vector2(reach);
-        if (movers.NoneNear(x, y, lo, hi, out MoverFrame? occupied) || movers.Hold() is not MoverFrame held)
+        if (!HoldMovers(movers, in frame, start, cellId, reach, self))
         {
-            return false; // no mover near in the state committed at the call's start: the call reads none
-        }
-
-        if (held != occupied && !held.Occupied(x, y, lo, hi))
-        {
-            Physics.Movers.Release(held); // (a later state than the one looked at unheld, with none near)
             return false;
         }
 
-        MoverCall call = MoverCall.OfThisThread();
-        call.Gather(held, x, y, lo, hi, self);
-        _call = call;
+        _call!.Gather();
         return true;
     }
 
@@ -100,11 +90,19 @@ internal struct Neighbourhood
         public int X, Y;
         public Vector2 Lo, Hi;
 
+        /// <summary>How many movers this thread's casts have looked at in the squares they are filed in (<see cref="MoversAlong"/>), all told: what a cast pays in movers (the tests read it).</summary>
+        public long Examined;
+
         public static MoverCall OfThisThread() => _ofThisThread ??= new MoverCall(); // (once per thread)
 
-        public void Gather(MoverFrame held, int x, int y, Vector2 lo, Vector2 hi, uint self)
+        /// <summary>Sets the call's state, who is moving and the box about its start (frame of landblock x, y), listing none yet (<see cref="Count"/> −1).</summary>
+        public void Set(MoverFrame held, int x, int y, Vector2 lo, Vector2 hi, uint self) =>
+            (Frame, SelfId, Self, X, Y, Lo, Hi, Count) = (held, self, self == 0 ? MoverState.Unregistered : held.StateOf(self), x, y, lo, hi, -1);
+
+        /// <summary>Lists the movers met in the call's box (up to <see cref="Capacity"/>).</summary>
+        public void Gather()
         {
-            (Frame, SelfId, Self, X, Y, Lo, Hi) = (held, self, self == 0 ? MoverState.Unregistered : held.StateOf(self), x, y, lo, hi);
+            (MoverFrame held, int x, int y, Vector2 lo, Vector2 hi, uint self) = (Frame!, X, Y, Lo, Hi, SelfId);
             int n = 0;
             for (MoverFrame.Near near = held.Around(x, y, lo, hi); near.MoveNext();)
             {
