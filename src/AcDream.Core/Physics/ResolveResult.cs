@@ -10,9 +10,13 @@ namespace AcDream.Core.Physics;
 /// <param name="IsOnGround">
 /// True exactly when <see cref="Position"/> stands on terrain or a floor: its Z within
 /// <see cref="PhysicsConstants.GroundTolerance"/> (0.2 mm) of the terrain, or of the floor of
-/// <see cref="CellId"/> nearest it, under its XY. False when the mover is above the ground (nothing
-/// under it, a refused move in mid-air, or airborne with step down): the caller's gravity should act.
-/// The one exception is a mover held because its landblock is not loaded: true, so it does not fall.
+/// <see cref="CellId"/> nearest it, under its XY, or of an object's floor there (the ground that
+/// <see cref="PhysicsEngine.TryGetGround(Vector3, uint, float, out float, out Vector3, out uint)"/> finds);
+/// with <see cref="MovementOptions.Footing"/>, also of a floor that holds the body within its support
+/// reach (<see cref="PhysicsConstants.SupportReach"/> of its radius past the floor's edge) where none
+/// is under its centre. False when the mover is above the ground (nothing under it, a refused move in
+/// mid-air, or airborne with step down): the caller's gravity should act. The one exception is a
+/// mover held because its landblock is not loaded: true, so it does not fall.
 /// </param>
 public readonly record struct ResolveResult(
     Vector3 Position,
@@ -27,9 +31,13 @@ public readonly record struct ResolveResult(
     /// <summary>
     /// True exactly when <see cref="Position"/> stands on terrain or a floor: its Z within
     /// <see cref="PhysicsConstants.GroundTolerance"/> (0.2 mm) of the terrain, or of the floor of
-    /// <see cref="CellId"/> nearest it, under its XY. False when the mover is above the ground (nothing
-    /// under it, a refused move in mid-air, or airborne with step down): the caller's gravity should act.
-    /// The one exception is a mover held because its landblock is not loaded: true, so it does not fall.
+    /// <see cref="CellId"/> nearest it, under its XY, or of an object's floor there (the ground that
+    /// <see cref="PhysicsEngine.TryGetGround(Vector3, uint, float, out float, out Vector3, out uint)"/> finds);
+    /// with <see cref="MovementOptions.Footing"/>, also of a floor that holds the body within its support
+    /// reach (<see cref="PhysicsConstants.SupportReach"/> of its radius past the floor's edge) where none
+    /// is under its centre. False when the mover is above the ground (nothing under it, a refused move in
+    /// mid-air, or airborne with step down): the caller's gravity should act. The one exception is a
+    /// mover held because its landblock is not loaded: true, so it does not fall.
     /// </summary>
     public bool IsOnGround
     {
