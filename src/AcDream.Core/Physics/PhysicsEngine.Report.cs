@@ -70,7 +70,7 @@ public sealed partial class PhysicsEngine
     /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
     /// <param name="moverId">The id of the mover that moves, or 0.</param>
     /// <param name="touched">Where the ids of the movers touched are written, in the order the line from the start to the answer first touches them (one overlapped at the start first, the one that stopped the move last; equal fractions in the order the committed state files them): the same for the same state and call.</param>
-    /// <param name="touchedCount">How many movers were touched; when more than <paramref name="touched"/> holds, the first touched that fit are written (at most 64).</param>
+    /// <param name="touchedCount">How many movers were touched; when more than <paramref name="touched"/> holds, the first touched that fit are written: the first 64 in the order touched, any more after them in the order the committed state files them.</param>
     /// <param name="report">What the move met.</param>
     /// <exception cref="ArgumentException">As the four-argument call.</exception>
     public ResolveResult Resolve(
@@ -125,7 +125,7 @@ public sealed partial class PhysicsEngine
         var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
         lands.Reporting = true;
         ResolveResult result = Move(ref query, in options, delta.Z);
-        report = Report(ref lands, in result, lands.Met, in options);
+        report = Report(ref lands, in result, new SurfaceContact(lands.MetKind, lands.MetId, default), in options);
         return result;
     }
 

@@ -88,6 +88,44 @@ public class MoverInsideSolidTests(ITestOutputHelper output)
     private static double Rounding(Vector3 world) =>
         0.71 * Math.Max(MathF.BitIncrement(MathF.Abs(world.X)) - MathF.Abs(world.X), MathF.BitIncrement(MathF.Abs(world.Y)) - MathF.Abs(world.Y));
 
+    /// <summary>Four walls X ±w/2, Y ±w/2, Z 0..h facing in (a pen): no solid, its inside is free.</summary>
+    private static GfxObj Pen(float width, float height)
+    {
+        float a = -width / 2f, b = width / 2f, h = height;
+        return DeterminismWalk.AddPhysicsPolygons(
+            new GfxObj { Id = 0x01FF0003, Flags = GfxObjFlags.HasPhysics },
+            [
+                [new(a, a, h), new(b, a, h), new(b, a, 0), new(a, a, 0)],
+                [new(b, b, 0), new(b, b, h), new(a, b, h), new(a, b, 0)],
+                [new(a, b, 0), new(a, b, h), new(a, a, h), new(a, a, 0)],
+                [new(b, a, 0), new(b, a, h), new(b, b, h), new(b, b, 0)],
+            ]);
+    }
+
+    [Theory]
+    [InlineData("centred")]
+    [InlineData("global")]
+    [InlineData("far")]
+    public void A_body_in_a_pen_of_walls_facing_in_walks_to_its_far_wall_and_no_further(string frame)
+    {
+        // Walls facing in wind the other way round the body: they close no solid, and the body inside walks freely
+        // until it meets the wall ahead, where it stops at its radius.
+        PhysicsEngine engine = Field(frame);
+        engine.Movers.Add(9, new MoverShape(Pen(4f, 2.2f)), At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Door);
+        engine.Movers.Commit();
+        Vector3 start = At(engine, Door + new Vector2(0.5f, 0.2f));
+        var body = new MovementOptions { Body = MoverBody.Player };
+        ResolveResult small = engine.Resolve(start, Outdoor, new Vector3(0.3f, 0f, 0f), 0.6f, in body);
+        output.WriteLine($"{frame}: 0.3 m → {small}");
+        small.Outcome.Should().Be(ResolveOutcome.Moved, "nothing stands within its radius");
+        Local(engine, small.Position).X.Should().BeApproximately(Door.X + 0.8f, 4e-3f, "(the world frame's float spacing)");
+        ResolveResult far = engine.Resolve(start, Outdoor, new Vector3(3f, 0f, 0f), 0.6f, in body);
+        output.WriteLine($"{frame}: 3 m → {far}");
+        far.Outcome.Should().BeOneOf([ResolveOutcome.Slid, ResolveOutcome.Wall], "the pen's east wall is ahead");
+        far.SurfaceNormal.X.Should().BeApproximately(-1f, 1e-6f, "it met the east wall, facing in");
+        Local(engine, far.Position).X.Should().BeInRange(Door.X + 2f - Radius - 0.01f, Door.X + 2f - Radius + 4e-3f, "it stops at its radius from the wall, inside the pen");
+    }
+
     [Theory]
     [InlineData("centred", -0.2f)]
     [InlineData("centred", -1f)]

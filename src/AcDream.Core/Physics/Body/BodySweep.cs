@@ -70,7 +70,8 @@ internal static class BodySweep
             {
                 var hit = WallHit.None;
                 walls.Sweep(move.At(position, rest), ref hit);
-                (t, normal, wall, lift) = (hit.T, hit.Normal, hit.Source, hit.Lift);
+                (t, normal, wall) = (hit.T, hit.Normal, hit.Source);
+                lift = hit.Source == hit.DeepSource ? hit.Lift : default; // (out of the solid it slides along, never another's)
                 if (contact == 0 && hit.Depth > sink && hit.Depth < 4f * sink)
                 {
                     // Sunk into the skin by rounding: back out to the contact radius, unless that pushes
@@ -124,12 +125,16 @@ internal static class BodySweep
                     break;
                 }
 
-                rest = alone;
+                rest = alone + lift;
             }
             else
             {
                 unprojected = rest;
-                rest = Along(rest, normal) + lift;
+                rest = Along(rest, normal);
+                if (lift != default)
+                {
+                    rest += lift; // (added only when there is one: a slide with no mover keeps its bits)
+                }
                 if (contact > 0 && Blocked(rest, previous, d))
                 {
                     break;

@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics;
 /// A mover's walls as a solid: its upright plane walls that meet a body's band, seen from above, are the outline of
 /// the solid when they close (each wall a segment A → B with the outside on its right, as <see cref="CellWalls"/> orders
 /// them from the polygon's outward normal; closed when the segments add up to nothing, as a loop does). A body whose
-/// centre is inside that outline (its winding number about the centre is not 0) is as deep in the solid as its contact
+/// centre is inside that outline (the walls wind round it once with their outside on the right: its winding number is positive; walls facing in, as a pen's, wind the other way and make no solid) is as deep in the solid as its contact
 /// radius plus the centre's distance to the nearest of those walls, and every side of the solid is behind it: there the
 /// sweep meets the solid only by the depth rule (<see cref="Sweep"/>), not by its walls. Anywhere else, and for a
 /// mover's cylinders, its walls are swept as any object's. Landblock-local metres; allocation-free.
@@ -120,6 +120,6 @@ internal static class MoverSolid
             }
         }
 
-        return winding != 0 && sum.LengthSquared() <= Closure * Closure;
+        return winding > 0 && sum.LengthSquared() <= Closure * Closure;
     }
 }

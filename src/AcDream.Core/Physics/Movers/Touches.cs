@@ -5,7 +5,7 @@ namespace AcDream.Core.Physics;
 /// <summary>The movers a call's move touched, blocking or not, for the caller that asks (a pass after the move).</summary>
 internal static class Touches
 {
-    /// <summary>Most touches one call writes, in order (their fractions on the stack, 4 bytes each): 64; more are only counted.</summary>
+    /// <summary>Most touches one call writes in the order touched (their fractions on the stack, 4 bytes each): 64; more are written after them in the order the committed state files them, where the span has room.</summary>
     public const int MaxWritten = 64;
 
     /// <summary>
@@ -15,7 +15,7 @@ internal static class Touches
     /// higher head (a point: to its step up), and <paramref name="stoppedBy"/> (a point's sub-step refused before the
     /// mover it would cross stops short of it); how many there are. They are written in the order the line first touches
     /// them (one it overlaps at its start first, the one that stopped it short last; equal fractions in the order the
-    /// committed state files them), the first that fit (at most <see cref="MaxWritten"/>).
+    /// committed state files them), the first that fit: the first <see cref="MaxWritten"/> in that order, any after them in the order the state files them.
     /// </summary>
     public static int Along(WorldFrame frame, ref Neighbourhood lands, Vector3 start, uint cellId, in ResolveResult result, float stepUp, MoverBody? body, uint stoppedBy, Span<uint> touched)
     {
@@ -51,8 +51,8 @@ internal static class Touches
 
     /// <summary>
     /// Puts <paramref name="id"/>, first touched at fraction <paramref name="t"/>, among the <paramref name="counted"/> touches
-    /// so far (those written: <paramref name="ids"/> with their <paramref name="fractions"/>, in order), after every one
-    /// touched no later; dropped when the span is full of earlier ones.
+    /// so far: the first <paramref name="fractions"/>.Length of them in order (after every one touched no later), and what
+    /// falls out of that ordered part when it is full written after it, in the order met, where <paramref name="ids"/> has room.
     /// </summary>
     private static void Put(Span<uint> ids, Span<float> fractions, int counted, uint id, float t)
     {
@@ -63,12 +63,23 @@ internal static class Touches
             at--;
         }
 
-        if (at == fractions.Length)
+        if (written == fractions.Length)
         {
-            return;
+            uint spilled = at == written ? id : ids[written - 1];
+            if (counted < ids.Length)
+            {
+                ids[counted] = spilled;
+            }
+
+            if (at == written)
+            {
+                return;
+            }
+
+            written--; // (its last was spilled)
         }
 
-        for (int k = Math.Min(written, fractions.Length - 1); k > at; k--)
+        for (int k = written; k > at; k--)
         {
             (ids[k], fractions[k]) = (ids[k - 1], fractions[k - 1]);
         }

@@ -113,7 +113,7 @@ internal ref struct MoveQuery
     {
         if (Lands.Reporting)
         {
-            Lands.Met = new SurfaceContact(kind, id, default);
+            (Lands.MetKind, Lands.MetId) = (kind, id);
         }
     }
 

@@ -46,13 +46,17 @@ internal partial struct Neighbourhood
     }
 
     /// <summary>
-    /// Whether the caller asked what the move met: then the wall, shell, cylinder or mover that stops or slides the move is
-    /// recorded in <see cref="Met"/> (<see cref="MoveQuery.Meet(SurfaceKind, uint)"/>); otherwise nothing is written.
+    /// Whether the caller asked what the move met: then the kind and id of the wall, shell, cylinder or mover that stops
+    /// or slides the move are recorded in <see cref="MetKind"/> and <see cref="MetId"/> (<see cref="MoveQuery.Meet(SurfaceKind, uint)"/>;
+    /// the answer gives the normal); otherwise nothing is written.
     /// </summary>
     public bool Reporting;
 
-    /// <summary>What stopped or slid the call's move, when <see cref="Reporting"/> (kind and id; the answer gives the normal).</summary>
-    public SurfaceContact Met;
+    /// <summary>What stopped or slid the call's move, when <see cref="Reporting"/>.</summary>
+    public SurfaceKind MetKind;
+
+    /// <summary>The id of <see cref="MetKind"/>'s surface.</summary>
+    public uint MetId;
 
     /// <summary>Lets go of the movers held for this call (<see cref="Meet"/>).</summary>
     public readonly void Release() => _call?.Release();
