@@ -20,7 +20,9 @@ public sealed partial class PhysicsEngine
     /// thickness or the seam between two. On the spec's bilinear terrain a ray is exact and a sphere meets the ground at
     /// its lowest point. A sphere that starts within its radius of a polygon and moves into its plane is stopped at fraction
     /// 0 with the polygon's normal; one moving along the plane or away is free of it (a sphere gliding over a floor of many
-    /// triangles); a start exactly on a polygon's plane is free of it either way (a ray up from the feet). A cylinder
+    /// triangles); a start exactly on a polygon's plane is free of it either way (a ray up from the feet on the terrain or a
+    /// cell's floor; an object's polygons are met at their vertices placed in double precision, up to 7.6e-6 m from the
+    /// float plane a mover's answer stands on, so start a cast a little above feet on an object's floor). A cylinder
     /// decides by its nearest point. A cast of zero
     /// length meets nothing. Unlike <c>Resolve</c>, it takes the end point, not a delta.
     /// </para>
