@@ -26,6 +26,13 @@ if (args.Contains("--walk-hash"))
     return 0;
 }
 
+// `--compare`: two rows (of two builds, or of this one) timed side by side in one process, interleaved, repeated in
+// independent processes (Compare/SideBySide.cs; README.md, "Ratios that hold").
+if (args.Contains("--compare"))
+{
+    return AcDream.Core.Benchmarks.Compare.SideBySide.Run(args);
+}
+
 // BenchmarkDotNet's default toolchain builds a child project for the host's runtime (about 15 s per
 // run). `--in-process` runs the benchmarks in this (Release) process instead, with no child build.
 bool inProcess = args.Contains("--in-process");

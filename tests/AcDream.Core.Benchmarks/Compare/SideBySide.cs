@@ -1,0 +1,221 @@
+using System.Diagnostics;
+using System.Globalization;
+
+namespace AcDream.Core.Benchmarks.Compare;
+
+/// <summary>
+/// <c>--compare</c>: speed ratios that hold on a noisy machine. Two benchmark rows (of two builds, or of one) are timed
+/// in one process, interleaved in short rounds (A then B, then B then A), so whatever slows the machine for a while
+/// slows both sides of every ratio alike. Each process reports the median of the rounds' ratios B/A with a 95 %
+/// bootstrap interval of that median; the parent repeats the measurement in independent processes (each compiles and
+/// lays out the code anew) and reports the median over them. With <c>--limit</c>, a pair whose median over the
+/// processes exceeds it fails the run (the speed gate of <c>.ci/speed-gate</c>).
+/// </summary>
+/// <remarks>
+/// <code>
+///   --compare [--base BASE.dll] [--processes P] [--rounds N] [--ms M] [--warmup S] [--limit L] PAIR...
+///   PAIR = ROW (with --base: the row in BASE.dll is A, in this build B)  |  ROW_A::ROW_B (two rows of this build)
+///   ROW  = Class.Method[@Param=Value,...]     e.g. ResolveOutdoorBenchmarks.Literal@Cells=64,Landblocks=9
+/// </code>
+/// Each side's benchmark assembly is loaded into a load context of its own with its own AcDream.Core, this build's as
+/// well, so both sides run under the same conditions.
+/// </remarks>
+internal static class SideBySide
+{
+    private sealed record Options(string? Base, int Processes, int Rounds, double Ms, double Warmup, double? Limit, List<string> Pairs);
+
+    public static int Run(string[] args)
+    {
+        Options o;
+        try
+        {
+            o = Parse(args);
+        }
+        catch (ArgumentException e)
+        {
+            Console.Error.WriteLine($"--compare: {e.Message}");
+            Console.Error.WriteLine("usage: --compare [--base BASE.dll] [--processes P] [--rounds N] [--ms M] [--warmup S] [--limit L] ROW | ROW_A::ROW_B ...");
+            return 2;
+        }
+
+        return args.Contains("--child") ? Child(o) : Parent(o, args);
+    }
+
+    private static Options Parse(string[] args)
+    {
+        var o = new Options(null, 3, 40, 10, 2, null, []);
+        for (int i = 0; i < args.Length; i++)
+        {
+            string Next() => i + 1 < args.Length ? args[++i] : throw new ArgumentException($"{args[i]} needs a value");
+            double Number() => double.Parse(Next(), CultureInfo.InvariantCulture);
+            switch (args[i])
+            {
+                case "--compare": case "--child": break;
+                case "--base": o = o with { Base = Path.GetFullPath(Next()) }; break;
+                case "--processes": o = o with { Processes = (int)Number() }; break;
+                case "--rounds": o = o with { Rounds = (int)Number() }; break;
+                case "--ms": o = o with { Ms = Number() }; break;
+                case "--warmup": o = o with { Warmup = Number() }; break;
+                case "--limit": o = o with { Limit = Number() }; break;
+                default:
+                    if (args[i].StartsWith("--", StringComparison.Ordinal))
+                    {
+                        throw new ArgumentException($"unknown option {args[i]}");
+                    }
+
+                    o.Pairs.Add(args[i]);
+                    break;
+            }
+        }
+
+        if (o.Pairs.Count == 0 || o.Processes < 1 || o.Rounds < 3 || o.Ms <= 0)
+        {
+            throw new ArgumentException("name at least one pair; processes ≥ 1, rounds ≥ 3, ms > 0");
+        }
+
+        if (o.Base is null && o.Pairs.Any(p => !p.Contains("::", StringComparison.Ordinal)))
+        {
+            throw new ArgumentException("without --base each pair is ROW_A::ROW_B");
+        }
+
+        return o;
+    }
+
+    /// <summary>One process's measurement: one line per pair, <c>ratio lo hi nsA nsB name</c>.</summary>
+    private static int Child(Options o)
+    {
+        string self = typeof(SideBySide).Assembly.Location;
+        foreach (string pair in o.Pairs)
+        {
+            (string a, string b) = o.Base is null ? Split(pair) : (pair, pair);
+            Row rowA = Row.Load(o.Base ?? self, a), rowB = Row.Load(self, b);
+            Measurement m = Measure(rowA, rowB, o);
+            Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"= {m.Ratio:F4} {m.Low:F4} {m.High:F4} {m.NsA:F1} {m.NsB:F1} {Name(o, pair)}"));
+        }
+
+        return 0;
+    }
+
+    private static (string A, string B) Split(string pair)
+    {
+        string[] parts = pair.Split("::");
+        return parts.Length == 2 ? (parts[0], parts[1]) : throw new ArgumentException($"'{pair}' is not ROW_A::ROW_B");
+    }
+
+    /// <summary>A pair's name in the report: the row (two builds), or "B ÷ A" (two rows).</summary>
+    private static string Name(Options o, string pair)
+    {
+        if (o.Base is not null)
+        {
+            return pair;
+        }
+
+        (string a, string b) = Split(pair);
+        return $"{b} ÷ {a}";
+    }
+
+    private readonly record struct Measurement(double Ratio, double Low, double High, double NsA, double NsB);
+
+    private static Measurement Measure(Row a, Row b, Options o)
+    {
+        a.Setup();
+        b.Setup();
+        var warm = Stopwatch.StartNew();
+        while (warm.Elapsed.TotalSeconds < o.Warmup)
+        {
+            a.Time(1);
+            b.Time(1);
+        }
+
+        int na = a.Calibrate(o.Ms), nb = b.Calibrate(o.Ms);
+        var ratios = new double[o.Rounds];
+        var ta = new double[o.Rounds];
+        var tb = new double[o.Rounds];
+        for (int r = 0; r < o.Rounds; r++)
+        {
+            if ((r & 1) == 0)
+            {
+                ta[r] = a.Time(na);
+                tb[r] = b.Time(nb);
+            }
+            else
+            {
+                tb[r] = b.Time(nb);
+                ta[r] = a.Time(na);
+            }
+
+            ratios[r] = tb[r] / ta[r];
+        }
+
+        (double lo, double hi) = Statistics.MedianInterval(ratios);
+        return new Measurement(Statistics.Median(ratios), lo, hi, Statistics.Median(ta), Statistics.Median(tb));
+    }
+
+    /// <summary>Runs the measurement in <see cref="Options.Processes"/> child processes, one after another, and reports each and the median over them.</summary>
+    private static int Parent(Options o, string[] args)
+    {
+        string self = typeof(SideBySide).Assembly.Location;
+        var byPair = new Dictionary<string, List<double>>();
+        var order = new List<string>();
+        Console.WriteLine($"{"pair (B ÷ A)",-72} {"B/A",7} {"95 % interval",17} {"A ns",9} {"B ns",9}");
+        for (int p = 1; p <= o.Processes; p++)
+        {
+            var start = new ProcessStartInfo("dotnet") { RedirectStandardOutput = true, UseShellExecute = false };
+            start.ArgumentList.Add(self);
+            foreach (string a in args)
+            {
+                start.ArgumentList.Add(a);
+            }
+
+            start.ArgumentList.Add("--child");
+            using Process child = Process.Start(start) ?? throw new InvalidOperationException("could not start a measuring process");
+            string? line;
+            while ((line = child.StandardOutput.ReadLine()) is not null)
+            {
+                if (!line.StartsWith("= ", StringComparison.Ordinal))
+                {
+                    if (!line.StartsWith("//", StringComparison.Ordinal))
+                    {
+                        Console.WriteLine(line); // (the setups' own notes start with "//")
+                    }
+
+                    continue;
+                }
+
+                string[] f = line[2..].Split(' ', 6);
+                double ratio = double.Parse(f[0], CultureInfo.InvariantCulture);
+                string name = f[5];
+                if (!byPair.TryGetValue(name, out List<double>? list))
+                {
+                    byPair[name] = list = [];
+                    order.Add(name);
+                }
+
+                list.Add(ratio);
+                Console.WriteLine($"{name,-72} {f[0],7} {$"[{f[1]}, {f[2]}]",17} {f[3],9} {f[4],9}   (process {p})");
+            }
+
+            child.WaitForExit();
+            if (child.ExitCode != 0)
+            {
+                Console.WriteLine($"the measuring process {p} failed (exit {child.ExitCode})");
+                return 2;
+            }
+        }
+
+        Console.WriteLine($"--- median over {o.Processes} processes (B/A){(o.Limit is double l ? $", limit {l:F2}" : "")}:");
+        bool over = false;
+        foreach (string name in order)
+        {
+            List<double> v = byPair[name];
+            double median = Statistics.Median([.. v]);
+            bool fails = o.Limit is double limit && median > limit;
+            over |= fails;
+            string each = string.Join(' ', v.Select(x => x.ToString("F3", CultureInfo.InvariantCulture)));
+            Console.WriteLine($"{name,-72} {median.ToString("F3", CultureInfo.InvariantCulture),7}  ({each}){(fails ? "  ABOVE THE LIMIT" : "")}");
+        }
+
+        return over ? 1 : 0;
+    }
+}
