@@ -33,6 +33,13 @@ if (args.Contains("--compare"))
     return AcDream.Core.Benchmarks.Compare.SideBySide.Run(args);
 }
 
+// `--run ROW [--seconds S] [--base BASE.dll]`: one row (of this build, or of BASE.dll) set up and called in a loop for
+// S seconds (default 10), to attach a sampling profiler to (Compare/RunOne.cs; README.md, "Profiles").
+if (args.Contains("--run"))
+{
+    return AcDream.Core.Benchmarks.Compare.RunOne.Run(args);
+}
+
 // BenchmarkDotNet's default toolchain builds a child project for the host's runtime (about 15 s per
 // run). `--in-process` runs the benchmarks in this (Release) process instead, with no child build.
 bool inProcess = args.Contains("--in-process");
