@@ -308,7 +308,13 @@ public class CastMoverBenchmarks
     public float Ray_100000Movers() => Run(_hundred, _from, _to, 0f);
 
     [Benchmark(OperationsPerInvoke = Casts)]
+    public float Sphere_NoMovers() => Run(_none, _from, _to, 0.3f);
+
+    [Benchmark(OperationsPerInvoke = Casts)]
     public float Sphere_100000Movers() => Run(_hundred, _from, _to, 0.3f);
+
+    [Benchmark(OperationsPerInvoke = Casts)]
+    public float RayOverHeads_NoMovers() => Run(_none, _overFrom, _overTo, 0f);
 
     [Benchmark(OperationsPerInvoke = Casts)]
     public float RayOverHeads_100000Movers() => Run(_hundred, _overFrom, _overTo, 0f);
