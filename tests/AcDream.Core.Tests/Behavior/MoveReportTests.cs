@@ -15,6 +15,7 @@ namespace AcDream.Core.Tests.Behavior;
 /// that stopped or slid it, named by kind and id, on the real Holtburg buildings and cells and a tree; and the
 /// answer with the report is the answer without it, bit for bit.
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public sealed class MoveReportTests(ITestOutputHelper output)
 {
     private const uint Outdoors = 0xA9B40000;

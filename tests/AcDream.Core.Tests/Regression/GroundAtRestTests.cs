@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Regression;
 /// under it (a slide beside a building on a plinth ended 0.3 m below the plinth's top, and resolving
 /// there again climbed onto it).
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class GroundAtRestTests
 {
     private const uint Landblock = 0xFDFDFFFFu;
