@@ -254,17 +254,16 @@ public sealed class TerrainSurface
 
     private static ulong SplitMask(int landblockX, int landblockY)
     {
+        // One pass per bit of the mask (bit cx * 8 + cy): the loop ends when the bit leaves the word.
         ulong mask = 0;
-        for (int cx = 0; cx < PhysicsConstants.CellsPerSide; cx++)
+        int cell = 0;
+        for (ulong bit = 1; bit != 0; bit <<= 1, cell++)
         {
-            for (int cy = 0; cy < PhysicsConstants.CellsPerSide; cy++)
+            uint gx = (uint)((landblockX * PhysicsConstants.CellsPerSide) + (cell / PhysicsConstants.CellsPerSide));
+            uint gy = (uint)((landblockY * PhysicsConstants.CellsPerSide) + (cell % PhysicsConstants.CellsPerSide));
+            if (IsSplitSwToNe(gx, gy))
             {
-                uint gx = (uint)((landblockX * PhysicsConstants.CellsPerSide) + cx);
-                uint gy = (uint)((landblockY * PhysicsConstants.CellsPerSide) + cy);
-                if (IsSplitSwToNe(gx, gy))
-                {
-                    mask |= 1ul << ((cx * PhysicsConstants.CellsPerSide) + cy);
-                }
+                mask |= bit;
             }
         }
 

@@ -15,6 +15,7 @@ namespace AcDream.Core.Tests.Behavior;
 /// that room, with the player's step of 0.6 m: the point mover and the player's body, in the global and
 /// the centred world frame.
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class CellarStairTests
 {
     private const float Step = 0.6f;

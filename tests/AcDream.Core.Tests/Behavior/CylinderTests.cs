@@ -6,6 +6,7 @@ using Xunit.Abstractions;
 namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>A tree: a Setup whose one part has no polygons and whose cylinder (radius 0.4, height 5) is its trunk.</summary>
+[Trait("Mutation", "ObjectQueries")]
 public class CylinderTests(ITestOutputHelper output)
 {
     private const uint Landblock = 0x7A3BFFFF;

@@ -15,6 +15,7 @@ namespace AcDream.Core.Tests.Behavior;
 /// that stopped or slid it, named by kind and id, on the real Holtburg buildings and cells and a tree; and the
 /// answer with the report is the answer without it, bit for bit.
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public sealed class MoveReportTests(ITestOutputHelper output)
 {
     private const uint Outdoors = 0xA9B40000;
@@ -122,5 +123,33 @@ public sealed class MoveReportTests(ITestOutputHelper output)
         }
 
         named.Should().BeGreaterThanOrEqualTo(4, $"{mover}: 6 m moves out of the cellar meet its walls");
+    }
+    [Theory]
+    [InlineData(0u)]
+    [InlineData(TestData.Holtburg)]
+    public void Walking_into_an_object_inside_a_cell_names_that_object(uint centre)
+    {
+        // A room with two objects in it, each one wall polygon: A across the path at x 20, B registered
+        // after it in a far corner. The point mover meets A and is refused there.
+        const uint room = 0xA9B40100u, a = 0x01000601u, b = 0x01000602u;
+        var engine = centre == 0 ? new PhysicsEngine() : new PhysicsEngine(centre);
+        CellSurface cell = new CellBuilder(room).Floor(10, 10, 30, 30, 50f).Build();
+        ObjectSurface[] objects =
+        [
+            new(ObjectKit.Gfx(a, TestData.Wall(20f, 15f, 20f, 25f, 49f, 53f)), ObjectKit.At(Vector3.Zero, 0f), room),
+            new(ObjectKit.Gfx(b, TestData.Wall(12f, 28f, 14f, 28f, 49f, 53f)), ObjectKit.At(Vector3.Zero, 0f), room),
+        ];
+        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(40f), [cell], objects);
+        Vector3 start = engine.ToWorld(room, new Vector3(18f, 20f, 50f));
+        ResolveResult r = engine.Resolve(start, room, new Vector3(4f, 0f, 0f), 0.5f, default, out MoveReport report);
+        output.WriteLine($"{r}; {report}");
+        r.Outcome.Should().Be(ResolveOutcome.Wall);
+        (r.Position, r.IsRefused).Should().Be((start, true), "the point mover is refused at a wall and stays");
+        report.Wall.Should().Be(new SurfaceContact(SurfaceKind.ObjectWall, a, r.SurfaceNormal));
+        report.Wall.Normal.X.Should().BeApproximately(-1f, 1e-6f, "A's wall faces the mover, west");
+
+        ResolveResult clear = engine.Resolve(start, room, new Vector3(0f, -3f, 0f), 0.5f, default, out MoveReport none);
+        clear.Outcome.Should().NotBe(ResolveOutcome.Wall, $"{clear}");
+        none.Wall.Should().Be(default(SurfaceContact), "nothing was met");
     }
 }

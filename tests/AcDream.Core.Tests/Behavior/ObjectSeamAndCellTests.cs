@@ -6,6 +6,7 @@ using AcDream.Core.Tests.Robustness;
 namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>Objects at a landblock seam and inside a cell.</summary>
+[Trait("Mutation", "ObjectQueries")]
 public class ObjectSeamAndCellTests
 {
     private const uint West = 0x5050FFFF;

@@ -6,6 +6,7 @@ using Xunit;
 namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>First checks of objects on the real data: the cottage's shell and the outdoor staircase.</summary>
+[Trait("Mutation", "ObjectQueries")]
 public class ObjectSmokeTests
 {
     private const float Step = 0.6f;

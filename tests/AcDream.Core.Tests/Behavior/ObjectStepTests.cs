@@ -11,6 +11,7 @@ namespace AcDream.Core.Tests.Behavior;
 /// rises through the step line ahead: a rise too high); a swept mover climbs it, each sub-step that rises too high
 /// taken in halves, down to 1/16 of the sub-step (<see cref="PhysicsConstants.MaxClimbHalvings"/>). Both world frames.
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class ObjectStepTests
 {
     private const float Step = 0.6f;

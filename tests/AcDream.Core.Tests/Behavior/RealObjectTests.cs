@@ -8,6 +8,7 @@ using Xunit.Abstractions;
 namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>The real objects: the cottage's shell with the Holtburg cells, the outdoor staircase, the small building on its plinth.</summary>
+[Trait("Mutation", "ObjectQueries")]
 public class RealObjectTests(ITestOutputHelper output)
 {
     private const float Step = 0.6f;

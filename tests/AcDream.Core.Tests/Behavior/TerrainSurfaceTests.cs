@@ -3,6 +3,7 @@ using static AcDream.Core.Tests.TestData;
 
 namespace AcDream.Core.Tests.Behavior;
 
+[Trait("Mutation", "TerrainSurface")]
 public class TerrainSurfaceTests
 {
     /// <summary>Independent bilinear reference in double: the formula of GameWindow.SampleTerrainZ.</summary>

@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Regression;
 /// landblock, a 52 m move passed through a beam at the other end. Now the beam stops it with any number of posts,
 /// and the body never ends more than 1 mm inside a post, a box or a wall among up to 7,000 objects.
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class CrowdedWallTests(ITestOutputHelper output)
 {
     private const uint Landblock = 0x8080FFFFu;

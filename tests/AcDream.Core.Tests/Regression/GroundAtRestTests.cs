@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Regression;
 /// under it (a slide beside a building on a plinth ended 0.3 m below the plinth's top, and resolving
 /// there again climbed onto it).
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class GroundAtRestTests
 {
     private const uint Landblock = 0xFDFDFFFFu;
@@ -75,5 +76,37 @@ public class GroundAtRestTests
         ResolveResult r = engine.Resolve(under, Landblock & 0xFFFF0000, Vector3.Zero, 0.6f);
         r.Position.Z.Should().Be(42.1f, $"{frame}: {r}");
         engine.Resolve(r.Position, r.CellId, Vector3.Zero, 0.6f).Should().Be(r);
+    }
+    [Theory]
+    [InlineData("global")]
+    [InlineData("centred")]
+    public void The_ground_under_stacked_floors_is_reached_a_step_at_a_time_and_stays(string frame)
+    {
+        // Flat terrain at 94 m; four floors (polygons alone, each its own object) over the same square at
+        // 94.4, 94.8, 95.2 and 95.8 m. With a step of 0.5 m from feet at 94 m each of the first three is within
+        // a step of the one below; the fourth is 0.6 m above the third.
+        PhysicsEngine engine = frame == "global" ? new PhysicsEngine() : new PhysicsEngine(TestData.Holtburg);
+        float[] levels = [94.4f, 94.8f, 95.2f, 95.8f];
+        var floors = new List<ObjectSurface>();
+        for (int k = 0; k < levels.Length; k++)
+        {
+            GfxObj gfx = ObjectKit.Gfx(0x01000500u + (uint)k, TestData.Square(60f, 60f, 64f, 64f, levels[k]));
+            floors.Add(new ObjectSurface(gfx, ObjectKit.At(Vector3.Zero, 0f), 0));
+        }
+
+        engine.AddLandblock(TestData.Holtburg, TestData.FlatTerrain(94f), [], floors);
+        Vector3 origin = engine.GetLandblockOrigin(TestData.Holtburg);
+        const uint outdoors = TestData.Holtburg & 0xFFFF0000;
+        foreach (float feet in new[] { 94f, 94.4f, 94.8f, 95.2f })
+        {
+            engine.TryGetGround(origin + new Vector3(62f, 62f, feet), outdoors, 0.5f, out float ground, out _, out uint objectId).Should().BeTrue();
+            ground.Should().Be(95.2f, $"{frame}: feet at {feet} m reach the third floor a step at a time, not the fourth");
+            objectId.Should().Be(0x01000502u, $"{frame}: feet at {feet} m");
+        }
+
+        engine.TryGetGround(origin + new Vector3(62f, 62f, 95.4f), outdoors, 0.5f, out float top, out _, out uint topId).Should().BeTrue();
+        (top, topId).Should().Be((95.8f, 0x01000503u), $"{frame}: feet 0.4 m below the fourth floor reach it");
+        engine.TryGetGround(origin + new Vector3(70f, 62f, 94f), outdoors, 0.5f, out float beside, out _, out uint none).Should().BeTrue();
+        (beside, none).Should().Be((94f, 0u), $"{frame}: beside the stack the ground is the terrain");
     }
 }

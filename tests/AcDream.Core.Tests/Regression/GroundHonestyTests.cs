@@ -11,6 +11,7 @@ namespace AcDream.Core.Tests.Regression;
 /// and hostile portal graphs cannot stall a call. Each reproduces the case found by trying to break
 /// the engine.
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class GroundHonestyTests
 {
     private const uint Lb = 0xA9B4FFFFu;

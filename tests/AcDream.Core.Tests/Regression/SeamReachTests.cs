@@ -11,6 +11,7 @@ namespace AcDream.Core.Tests.Regression;
 /// when the move's own box crosses the seam: a body 5 m from the seam, moving 1 m at a time toward such a
 /// wall 3.5 m into its landblock, stops at it (it walked through before, both frames).
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class SeamReachTests
 {
     private const float GroundZ = 94f;

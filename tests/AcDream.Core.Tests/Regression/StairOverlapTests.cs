@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Regression;
 /// ceiling check no longer stops it for an overlap it started with. Defect B: a mover just below a ceiling
 /// opening whose move ends over the floor above (within the step) climbs out through the opening.
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class StairOverlapTests
 {
     private static PhysicsEngine Engine(string frame) => RealObjects.HoltburgWithCellarStairs(frame);

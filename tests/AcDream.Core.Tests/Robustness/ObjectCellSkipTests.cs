@@ -15,6 +15,7 @@ namespace AcDream.Core.Tests.Robustness;
 /// the trees. In both world frames; the literal call and the player (whose body keeps its radius from
 /// every trunk).
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class ObjectCellSkipTests(ITestOutputHelper output)
 {
     private const uint Landblock = 0x4C5DFFFF;

@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Robustness;
 /// and "off means free": an empty object list answers bit for bit as the three-argument AddLandblock,
 /// and so do objects in a landblock far from the moves.
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class ObjectInvariantTests(ITestOutputHelper output)
 {
     private const uint Holtburg = TestData.Holtburg;

@@ -15,6 +15,7 @@ namespace AcDream.Core.Tests.Robustness;
 /// world (some reaching over the seams), seeded walks toward them of 5 cm to 4 m per move, the point, the
 /// body and <see cref="MovementOptions.Player"/>, in the global frame and a frame centred far away.
 /// </summary>
+[Trait("Mutation", "ObjectQueries")]
 public class ObjectRestInvariantTests(ITestOutputHelper output)
 {
     private static readonly uint[] Landblocks = [0xFDFDFFFFu, 0xFEFDFFFFu, 0xFDFEFFFFu, 0xFEFEFFFFu];
