@@ -8,7 +8,9 @@ namespace AcDream.Core.Benchmarks.Compare;
 /// in one process, interleaved in short rounds (A then B, then B then A), so whatever slows the machine for a while
 /// slows both sides of every ratio alike. Each process reports the median of the rounds' ratios B/A with a 95 %
 /// bootstrap interval of that median; the parent repeats the measurement in independent processes (each compiles and
-/// lays out the code anew) and reports the median over them. With <c>--limit</c>, a pair whose median over the
+/// lays out the code anew), every other one loading and setting up B before A (which side is set up first can run
+/// several per cent apart, the same build against itself 0.92 one way and 1.06 the other), and reports the median over
+/// them: an even number of processes (4 by default) weighs both orders alike. With <c>--limit</c>, a pair whose median over the
 /// processes exceeds it fails the run (the speed gate of <c>.ci/speed-gate</c>).
 /// </summary>
 /// <remarks>
@@ -22,7 +24,11 @@ namespace AcDream.Core.Benchmarks.Compare;
 /// </remarks>
 internal static class SideBySide
 {
-    private sealed record Options(string? Base, int Processes, int Rounds, double Ms, double Warmup, double? Limit, List<string> Pairs);
+    private sealed record Options(string? Base, int Processes, int Rounds, double Ms, double Warmup, double? Limit, List<string> Pairs)
+    {
+        /// <summary>In this (child) process, B is loaded and set up before A (every other process: see <see cref="Parent"/>).</summary>
+        public bool BFirst { get; init; }
+    }
 
     public static int Run(string[] args)
     {
@@ -43,7 +49,7 @@ internal static class SideBySide
 
     private static Options Parse(string[] args)
     {
-        var o = new Options(null, 3, 40, 10, 2, null, []);
+        var o = new Options(null, 4, 40, 10, 2, null, []);
         for (int i = 0; i < args.Length; i++)
         {
             string Next() => i + 1 < args.Length ? args[++i] : throw new ArgumentException($"{args[i]} needs a value");
@@ -51,6 +57,7 @@ internal static class SideBySide
             switch (args[i])
             {
                 case "--compare": case "--child": break;
+                case "--b-first": o = o with { BFirst = true }; break;
                 case "--base": o = o with { Base = Path.GetFullPath(Next()) }; break;
                 case "--processes": o = o with { Processes = (int)Number() }; break;
                 case "--rounds": o = o with { Rounds = (int)Number() }; break;
@@ -88,8 +95,18 @@ internal static class SideBySide
         foreach (string pair in o.Pairs)
         {
             (string a, string b) = o.Base is null ? Split(pair) : (pair, pair);
-            Row rowA = Row.Load(o.Base ?? self, a), rowB = Row.Load(self, b);
-            Measurement m = Measure(rowA, rowB, o);
+            Measurement m;
+            if (o.BFirst)
+            {
+                Row rowB = Row.Load(self, b), rowA = Row.Load(o.Base ?? self, a);
+                m = Measure(rowB, rowA, o).Inverse();
+            }
+            else
+            {
+                Row rowA = Row.Load(o.Base ?? self, a), rowB = Row.Load(self, b);
+                m = Measure(rowA, rowB, o);
+            }
+
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
                 $"= {m.Ratio:F4} {m.Low:F4} {m.High:F4} {m.NsA:F1} {m.NsB:F1} {Name(o, pair)}"));
         }
@@ -115,7 +132,11 @@ internal static class SideBySide
         return $"{b} ÷ {a}";
     }
 
-    private readonly record struct Measurement(double Ratio, double Low, double High, double NsA, double NsB);
+    private readonly record struct Measurement(double Ratio, double Low, double High, double NsA, double NsB)
+    {
+        /// <summary>The same measurement read the other way round (A/B as B/A).</summary>
+        public Measurement Inverse() => new(1 / Ratio, 1 / High, 1 / Low, NsB, NsA);
+    }
 
     private static Measurement Measure(Row a, Row b, Options o)
     {
@@ -169,6 +190,10 @@ internal static class SideBySide
             }
 
             start.ArgumentList.Add("--child");
+            if (p % 2 == 0)
+            {
+                start.ArgumentList.Add("--b-first"); // (what is loaded, set up and warmed first can run a few % apart: alternate)
+            }
             using Process child = Process.Start(start) ?? throw new InvalidOperationException("could not start a measuring process");
             string? line;
             while ((line = child.StandardOutput.ReadLine()) is not null)
