@@ -173,13 +173,52 @@ internal static class SideBySide
         return new Measurement(Statistics.Median(ratios), lo, hi, Statistics.Median(ta), Statistics.Median(tb));
     }
 
-    /// <summary>Runs the measurement in <see cref="Options.Processes"/> child processes, one after another, and reports each and the median over them.</summary>
+    /// <summary>
+    /// Runs the measurement in <see cref="Options.Processes"/> child processes, one after another, and reports each and the
+    /// median over them. With a limit, the pairs whose median is above it are measured again in as many processes, and
+    /// judged by the median over all of theirs: a process's code layout can move one row's ratio by several per cent
+    /// (the camera's cast of the same engine read 0.92–1.09), and a real slowdown stays above the limit in both passes.
+    /// </summary>
     private static int Parent(Options o, string[] args)
     {
-        string self = typeof(SideBySide).Assembly.Location;
         var byPair = new Dictionary<string, List<double>>();
         var order = new List<string>();
         Console.WriteLine($"{"pair (B ÷ A)",-72} {"B/A",7} {"95 % interval",17} {"A ns",9} {"B ns",9}");
+        if (!Measure(o, args, o.Pairs, byPair, order))
+        {
+            return 2;
+        }
+
+        List<string> again = o.Limit is double first ? [.. o.Pairs.Where(pair => Statistics.Median([.. byPair[Name(o, pair)]]) > first)] : [];
+        if (again.Count > 0)
+        {
+            Console.WriteLine($"--- above the limit over {o.Processes} processes, measured again: {string.Join(", ", again)}");
+            string[] options = [.. args.Where(a => !o.Pairs.Contains(a))];
+            if (!Measure(o, [.. options, .. again], again, byPair, order))
+            {
+                return 2;
+            }
+        }
+
+        Console.WriteLine($"--- median over the processes (B/A){(o.Limit is double l ? $", limit {l:F2}" : "")}:");
+        bool over = false;
+        foreach (string name in order)
+        {
+            List<double> v = byPair[name];
+            double median = Statistics.Median([.. v]);
+            bool fails = o.Limit is double limit && median > limit;
+            over |= fails;
+            string each = string.Join(' ', v.Select(x => x.ToString("F3", CultureInfo.InvariantCulture)));
+            Console.WriteLine($"{name,-72} {median.ToString("F3", CultureInfo.InvariantCulture),7}  ({each}){(fails ? "  ABOVE THE LIMIT" : "")}");
+        }
+
+        return over ? 1 : 0;
+    }
+
+    /// <summary>Measures <paramref name="pairs"/> (named in <paramref name="args"/>) in <see cref="Options.Processes"/> child processes, adding each process's ratio per pair.</summary>
+    private static bool Measure(Options o, string[] args, List<string> pairs, Dictionary<string, List<double>> byPair, List<string> order)
+    {
+        string self = typeof(SideBySide).Assembly.Location;
         for (int p = 1; p <= o.Processes; p++)
         {
             var start = new ProcessStartInfo("dotnet") { RedirectStandardOutput = true, UseShellExecute = false };
@@ -192,8 +231,9 @@ internal static class SideBySide
             start.ArgumentList.Add("--child");
             if (p % 2 == 0)
             {
-                start.ArgumentList.Add("--b-first"); // (what is loaded, set up and warmed first can run a few % apart: alternate)
+                start.ArgumentList.Add("--b-first"); // (which side is set up first can run a few per cent apart: alternate)
             }
+
             using Process child = Process.Start(start) ?? throw new InvalidOperationException("could not start a measuring process");
             string? line;
             while ((line = child.StandardOutput.ReadLine()) is not null)
@@ -209,7 +249,6 @@ internal static class SideBySide
                 }
 
                 string[] f = line[2..].Split(' ', 6);
-                double ratio = double.Parse(f[0], CultureInfo.InvariantCulture);
                 string name = f[5];
                 if (!byPair.TryGetValue(name, out List<double>? list))
                 {
@@ -217,30 +256,18 @@ internal static class SideBySide
                     order.Add(name);
                 }
 
-                list.Add(ratio);
+                list.Add(double.Parse(f[0], CultureInfo.InvariantCulture));
                 Console.WriteLine($"{name,-72} {f[0],7} {$"[{f[1]}, {f[2]}]",17} {f[3],9} {f[4],9}   (process {p})");
             }
 
             child.WaitForExit();
             if (child.ExitCode != 0)
             {
-                Console.WriteLine($"the measuring process {p} failed (exit {child.ExitCode})");
-                return 2;
+                Console.WriteLine($"the measuring process {p} failed (exit {child.ExitCode}) on {pairs.Count} pair(s)");
+                return false;
             }
         }
 
-        Console.WriteLine($"--- median over {o.Processes} processes (B/A){(o.Limit is double l ? $", limit {l:F2}" : "")}:");
-        bool over = false;
-        foreach (string name in order)
-        {
-            List<double> v = byPair[name];
-            double median = Statistics.Median([.. v]);
-            bool fails = o.Limit is double limit && median > limit;
-            over |= fails;
-            string each = string.Join(' ', v.Select(x => x.ToString("F3", CultureInfo.InvariantCulture)));
-            Console.WriteLine($"{name,-72} {median.ToString("F3", CultureInfo.InvariantCulture),7}  ({each}){(fails ? "  ABOVE THE LIMIT" : "")}");
-        }
-
-        return over ? 1 : 0;
+        return true;
     }
 }
