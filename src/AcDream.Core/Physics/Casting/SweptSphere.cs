@@ -21,6 +21,25 @@ internal readonly record struct D3(double X, double Y, double Z)
     public double Length => Math.Sqrt(Dot(this, this));
 
     public Vector3 ToVector3() => new((float)X, (float)Y, (float)Z);
+
+    /// <summary>
+    /// The plane of polygon <paramref name="v"/> (in winding order): its Newell normal (not normalised: its length is
+    /// twice the area), robust to collinear vertices, and the sum of its vertices (÷ their count: the mean it passes through).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // (on every polygon a cast tests)
+    public static (D3 Normal, D3 Sum) Newell(ReadOnlySpan<D3> v)
+    {
+        double nx = 0, ny = 0, nz = 0, cx = 0, cy = 0, cz = 0;
+        for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
+        {
+            nx += (v[j].Y - v[i].Y) * (v[j].Z + v[i].Z);
+            ny += (v[j].Z - v[i].Z) * (v[j].X + v[i].X);
+            nz += (v[j].X - v[i].X) * (v[j].Y + v[i].Y);
+            (cx, cy, cz) = (cx + v[i].X, cy + v[i].Y, cz + v[i].Z);
+        }
+
+        return (new D3(nx, ny, nz), new D3(cx, cy, cz));
+    }
 }
 
 /// <summary>
@@ -100,15 +119,8 @@ internal struct SweptSphere
     public void Polygon(ReadOnlySpan<D3> v, SurfaceKind kind, uint id, SurfaceKind kindFacingDown)
     {
         // Newell normal, through the vertices' mean.
-        double nx = 0, ny = 0, nz = 0, cx = 0, cy = 0, cz = 0;
-        for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
-        {
-            nx += (v[j].Y - v[i].Y) * (v[j].Z + v[i].Z);
-            ny += (v[j].Z - v[i].Z) * (v[j].X + v[i].X);
-            nz += (v[j].X - v[i].X) * (v[j].Y + v[i].Y);
-            (cx, cy, cz) = (cx + v[i].X, cy + v[i].Y, cz + v[i].Z);
-        }
-
+        (D3 newell, D3 sum) = D3.Newell(v);
+        (double nx, double ny, double nz, double cx, double cy, double cz) = (newell.X, newell.Y, newell.Z, sum.X, sum.Y, sum.Z);
         double length = Math.Sqrt((nx * nx) + (ny * ny) + (nz * nz));
         if (!(length > 1e-12))
         {

@@ -74,16 +74,8 @@ internal sealed class ExactPolygons
     /// <summary><paramref name="p"/> moved along Z onto the plane of polygon <paramref name="v"/> (its Newell normal through its mean; the normal's Z is a floor's, far from 0).</summary>
     private static D3 OnPlane(D3[] v, D3 p)
     {
-        double nx = 0, ny = 0, nz = 0, cx = 0, cy = 0, cz = 0;
-        for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
-        {
-            nx += (v[j].Y - v[i].Y) * (v[j].Z + v[i].Z);
-            ny += (v[j].Z - v[i].Z) * (v[j].X + v[i].X);
-            nz += (v[j].X - v[i].X) * (v[j].Y + v[i].Y);
-            (cx, cy, cz) = (cx + v[i].X, cy + v[i].Y, cz + v[i].Z);
-        }
-
-        (cx, cy, cz) = (cx / v.Length, cy / v.Length, cz / v.Length);
-        return new D3(p.X, p.Y, cz - (((nx * (p.X - cx)) + (ny * (p.Y - cy))) / nz));
+        (D3 n, D3 sum) = D3.Newell(v);
+        (double cx, double cy, double cz) = (sum.X / v.Length, sum.Y / v.Length, sum.Z / v.Length);
+        return new D3(p.X, p.Y, cz - (((n.X * (p.X - cx)) + (n.Y * (p.Y - cy))) / n.Z));
     }
 }
