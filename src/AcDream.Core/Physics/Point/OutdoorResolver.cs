@@ -76,7 +76,7 @@ internal sealed class OutdoorResolver(WorldFrame frame, PortalTraversal portals)
         float groundZ = there.Terrain.SampleZUnchecked(candidate.X, candidate.Y);
         bool onObject = false;
         Vector2 lo = Vector2.Min(local, local + delta), hi = Vector2.Max(local, local + delta);
-        if (objectsNear || there != here || (q.Lands.ReachInto(here).Meets(lo, hi) && AnyNeighbourNear(ref q.Lands, here, lo, hi)))
+        if (objectsNear || there != here || (SeamReach.NearASeam(lo, hi) && q.Lands.ReachInto(here).Meets(lo, hi) && AnyNeighbourNear(ref q.Lands, here, lo, hi)))
         {
             // Among objects: refused at the first object wall the move crosses at the feet plus the step
             // (a shell's is the building's outer wall); else it ends on the highest floor under the end

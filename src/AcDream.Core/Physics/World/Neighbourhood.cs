@@ -17,14 +17,17 @@ namespace AcDream.Core.Physics;
 internal partial struct Neighbourhood
 {
     private readonly LandblockRegistry _registry;
+
+    /// <summary>The first landblock the call read (its centre), at <see cref="_centreX"/>, <see cref="_centreY"/>: most calls read no other.</summary>
+    private LandblockEntry? _centre;
     private Entries _entries;
     private int _centreX;
     private int _centreY;
 
-    /// <summary>Bit (dx + 1)·3 + (dy + 1) set once landblock (centre + (dx, dy)) is read; bit 9 once the centre is set.</summary>
+    /// <summary>Bit (dx + 1)·3 + (dy + 1) set once landblock (centre + (dx, dy)) is read (the centre's, bit 4, with the centre).</summary>
     private int _read;
 
-    public Neighbourhood(LandblockRegistry registry) => _registry = registry;
+    public Neighbourhood(LandblockRegistry registry) => (_registry, _centreX) = (registry, int.MinValue); // (no centre yet: no landblock has that X)
 
     /// <summary>
     /// Holds the committed movers for this call, for the mover <paramref name="self"/> (0: not a mover) starting at
@@ -197,14 +200,28 @@ internal partial struct Neighbourhood
         }
     }
 
+    /// <summary>Landblock (<paramref name="x"/>, <paramref name="y"/>) as this call first read it (null: not loaded, or off the world).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public LandblockEntry? Get(int x, int y)
     {
-        if (_read == 0)
+        if (x == _centreX && y == _centreY)
         {
-            (_centreX, _centreY, _read) = (x, y, 1 << 9); // the first landblock read is the centre
+            return _centre;
         }
 
+        if (_centreX == int.MinValue)
+        {
+            (_centreX, _centreY, _read) = (x, y, 1 << 4); // the first landblock read is the centre
+            return _centre = _registry.Get(x, y);
+        }
+
+        return Read(x, y);
+    }
+
+    /// <summary><see cref="Get"/> of a landblock other than the centre: the 3 × 3 around the centre are kept.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: a call that reads only its centre pays two compares
+    private LandblockEntry? Read(int x, int y)
+    {
         uint dx = (uint)(x - _centreX + 1), dy = (uint)(y - _centreY + 1);
         if (dx > 2 || dy > 2)
         {

@@ -46,6 +46,23 @@ internal readonly struct SeamReach
     }
 
     /// <summary>Per side, the larger of the two.</summary>
+    /// <summary>
+    /// The most any neighbour's reach can be, metres past a seam: <see cref="PhysicsConstants.MaxSeamReach"/> and the 2 m
+    /// of <see cref="Into"/>'s rounding.
+    /// </summary>
+    public const float Farthest = PhysicsConstants.MaxSeamReach + 2f;
+
+    /// <summary>
+    /// Whether the box <paramref name="lo"/>–<paramref name="hi"/> comes within <see cref="Farthest"/> of a seam: if not,
+    /// no reach <see cref="Meets"/> it, so a move in the middle of a landblock reads none.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool NearASeam(Vector2 lo, Vector2 hi)
+    {
+        const float size = PhysicsConstants.LandblockSize;
+        return lo.X < Farthest || hi.X > size - Farthest || lo.Y < Farthest || hi.Y > size - Farthest;
+    }
+
     public static SeamReach Max(SeamReach a, SeamReach b)
     {
         uint packed = 0;
