@@ -9,7 +9,7 @@ internal static partial class WorldCast
     /// <summary>A cell's walls (ceilings named as such), floors and the objects standing in it, within the box.</summary>
     private static void Cell(ref SweptSphere ray, CellSurface cell, D3 offset, in Box box)
     {
-        Walls(ref ray, cell.Walls, offset, in box, SurfaceKind.CellWall, SurfaceKind.CellCeiling, SurfaceKind.CellWall, cell.CellId);
+        Walls(ref ray, cell.Walls, offset, in box, new Names(SurfaceKind.CellWall, SurfaceKind.CellCeiling, SurfaceKind.CellWall, cell.CellId));
         Floors(ref ray, cell.Floors, offset, in box, SurfaceKind.CellFloor, cell.CellId);
         foreach (ObjectSurface o in cell.Objects)
         {
@@ -26,41 +26,8 @@ internal static partial class WorldCast
         }
 
         SurfaceKind wall = o.IsBuilding ? SurfaceKind.BuildingShell : SurfaceKind.ObjectWall;
-        ObjectWalls(ref ray, o, offset, in box, wall);
+        Walls(ref ray, o.Walls, new Exact(o.Exact.Walls), offset, in box, new Names(wall, wall, SurfaceKind.Cylinder, o.ObjectId));
         ObjectFloors(ref ray, o, offset, in box);
-    }
-
-    /// <summary>An object's wall polygons (at their exact vertices, <see cref="ObjectSurface.Exact"/>) and cylinders whose bounds meet the box.</summary>
-    [SkipLocalsInit] // the vertex buffer is written before it is read
-    private static void ObjectWalls(ref SweptSphere ray, ObjectSurface o, D3 offset, in Box box, SurfaceKind kind)
-    {
-        WallPolygon[] polygons = o.Walls.Polygons;
-        WallExtent[] extents = o.Walls.Extents;
-        D3[] vertices = o.Exact.Walls;
-        System.Runtime.Intrinsics.Vector128<float> query = WallExtent.Query(box.Lo, box.Hi);
-        Span<D3> v = stackalloc D3[PhysicsConstants.MaxWallPolygonVertices];
-        D3 rel = offset - ray.Start;
-        for (int i = 0; i < polygons.Length; i++)
-        {
-            if (!extents[i].Meets(query, box.ZLo, box.ZHi))
-            {
-                continue;
-            }
-
-            ref readonly WallPolygon w = ref polygons[i];
-            if (w.Radius > 0f)
-            {
-                ray.Cylinder(w.A.X + rel.X, w.A.Y + rel.Y, w.Radius, w.ZMin + rel.Z, w.ZMax + rel.Z, SurfaceKind.Cylinder, o.ObjectId);
-                continue;
-            }
-
-            for (int k = 0; k < w.Count; k++)
-            {
-                v[k] = vertices[w.First + k] + rel;
-            }
-
-            ray.Polygon(v[..w.Count], kind, o.ObjectId, kind);
-        }
     }
 
     /// <summary>An object's floor triangles whose bounds meet the box, at their exact corners (<see cref="ObjectSurface.Exact"/>).</summary>
@@ -84,13 +51,42 @@ internal static partial class WorldCast
         }
     }
 
-    /// <summary>Wall polygons and cylinders whose bounds meet the box.</summary>
+    /// <summary>What a cast meeting a wall names: a wall's kind, a face's facing down (a ceiling), a cylinder's, and the id.</summary>
+    private readonly record struct Names(SurfaceKind Wall, SurfaceKind FacingDown, SurfaceKind Round, uint Id);
+
+    /// <summary>Where a wall polygon's vertices come from, relative to the cast's start.</summary>
+    private interface IVertices
+    {
+        D3 At(int index, D3 rel);
+    }
+
+    /// <summary>Vertices as the walls hold them, in float (cells' and movers' walls).</summary>
+    private readonly struct Placed(Vector3[] vertices) : IVertices
+    {
+        public D3 At(int index, D3 rel)
+        {
+            Vector3 p = vertices[index];
+            return new D3(p.X + rel.X, p.Y + rel.Y, p.Z + rel.Z);
+        }
+    }
+
+    /// <summary>An object's vertices placed in double (<see cref="ObjectSurface.Exact"/>).</summary>
+    private readonly struct Exact(D3[] vertices) : IVertices
+    {
+        public D3 At(int index, D3 rel) => vertices[index] + rel;
+    }
+
+    /// <summary>Wall polygons and cylinders whose bounds meet the box, at the vertices the walls hold.</summary>
+    private static void Walls(ref SweptSphere ray, CellWalls walls, D3 offset, in Box box, Names names) =>
+        Walls(ref ray, walls, new Placed(walls.Vertices), offset, in box, names);
+
+    /// <summary>Wall polygons and cylinders whose bounds meet the box, at <paramref name="vertices"/>.</summary>
     [SkipLocalsInit] // the vertex buffer is written before it is read
-    private static void Walls(ref SweptSphere ray, CellWalls walls, D3 offset, in Box box, SurfaceKind kind, SurfaceKind facingDown, SurfaceKind round, uint id)
+    private static void Walls<TVertices>(ref SweptSphere ray, CellWalls walls, TVertices vertices, D3 offset, in Box box, Names names)
+        where TVertices : struct, IVertices
     {
         WallPolygon[] polygons = walls.Polygons;
         WallExtent[] extents = walls.Extents;
-        Vector3[] vertices = walls.Vertices;
         System.Runtime.Intrinsics.Vector128<float> query = WallExtent.Query(box.Lo, box.Hi);
         Span<D3> v = stackalloc D3[PhysicsConstants.MaxWallPolygonVertices];
         D3 rel = offset - ray.Start;
@@ -104,17 +100,16 @@ internal static partial class WorldCast
             ref readonly WallPolygon w = ref polygons[i];
             if (w.Radius > 0f)
             {
-                ray.Cylinder(w.A.X + rel.X, w.A.Y + rel.Y, w.Radius, w.ZMin + rel.Z, w.ZMax + rel.Z, round, id);
+                ray.Cylinder(w.A.X + rel.X, w.A.Y + rel.Y, w.Radius, w.ZMin + rel.Z, w.ZMax + rel.Z, names.Round, names.Id);
                 continue;
             }
 
             for (int k = 0; k < w.Count; k++)
             {
-                Vector3 p = vertices[w.First + k];
-                v[k] = new D3(p.X + rel.X, p.Y + rel.Y, p.Z + rel.Z);
+                v[k] = vertices.At(w.First + k, rel);
             }
 
-            ray.Polygon(v[..w.Count], kind, id, facingDown);
+            ray.Polygon(v[..w.Count], names.Wall, names.Id, names.FacingDown);
         }
     }
 

@@ -329,7 +329,7 @@ internal static partial class WorldCast
                 for (BoxGrid.Cursor near = walls.Near(box.Lo, box.Hi); near.MoveNext();)
                 {
                     CellSurface cell = entry.Cells[near.Current];
-                    Walls(ref ray, cell.Walls, offset, in box, SurfaceKind.CellWall, SurfaceKind.CellCeiling, SurfaceKind.CellWall, cell.CellId);
+                    Walls(ref ray, cell.Walls, offset, in box, new Names(SurfaceKind.CellWall, SurfaceKind.CellCeiling, SurfaceKind.CellWall, cell.CellId));
                 }
             }
 
@@ -422,7 +422,7 @@ internal static partial class WorldCast
                 }
 
                 D3 at = offset + new D3(near.Offset.X, near.Offset.Y, 0);
-                Walls(ref ray, movers.Walls[j], at, box.Moved(-near.Offset), SurfaceKind.Mover, SurfaceKind.Mover, SurfaceKind.Mover, movers.Ids[j]);
+                Walls(ref ray, movers.Walls[j], at, box.Moved(-near.Offset), new Names(SurfaceKind.Mover, SurfaceKind.Mover, SurfaceKind.Mover, movers.Ids[j]));
             }
         }
 
