@@ -90,11 +90,15 @@ public class SweptSphereTests
     public void A_steep_polygon_facing_down_is_named_by_the_kind_facing_down_and_one_facing_up_by_its_kind()
     {
         // A wall tilted so its normal's Z is -0.6 (steeper than a floor facing down) and one whose normal's Z is -0.8.
-        foreach ((double nz, SurfaceKind expected) in new[] { (-0.6, SurfaceKind.CellFloor), (-0.8, SurfaceKind.CellWall), (0.8, SurfaceKind.CellFloor) })
+        foreach ((double nz, SurfaceKind expected, double turn) in new[]
         {
-            double nx = Math.Sqrt(1 - (nz * nz));
-            var n = new D3(nx, 0, nz);
-            var u = new D3(0, 1, 0);
+            (-0.6, SurfaceKind.CellFloor, 0.0), (-0.8, SurfaceKind.CellWall, 0.0), (0.8, SurfaceKind.CellFloor, 0.0),
+            (-0.6, SurfaceKind.CellFloor, 1.1), (-0.8, SurfaceKind.CellWall, 2.0), (0.8, SurfaceKind.CellFloor, -2.6),
+        })
+        {
+            double h = Math.Sqrt(1 - (nz * nz));
+            var n = new D3(h * Math.Cos(turn), h * Math.Sin(turn), nz);
+            var u = new D3(-Math.Sin(turn), Math.Cos(turn), 0);
             D3 w = D3.Cross(n, u); // in the plane, with u: (u, w, n) right-handed for a counter-clockwise winding about n
             D3 c = n * -2; // the plane 2 m from the start, the start on its normal's side
             D3[] v = [c - u - w, c + u - w, c + u + w, c - u + w];
@@ -400,6 +404,18 @@ public class SweptSphereTests
     }
 
     [Fact]
+    public void A_sphere_moving_obliquely_at_a_cylinder_meets_its_side_facing_it()
+    {
+        // The axis 3 m along the move (4, 3, 0)/5: the centre stops 0.75 m short of it, at 2.25 of 5 m.
+        var s = new SweptSphere(Origin, new D3(4, 3, 0), 0.25);
+        s.Cylinder(2.4, 1.8, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        ShouldMeet(s, 0.45, new D3(-0.8, -0.6, 0), SurfaceKind.Cylinder, 8);
+        var back = new SweptSphere(Origin, new D3(-4, 3, 0), 0.25);
+        back.Cylinder(-2.4, 1.8, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        ShouldMeet(back, 0.45, new D3(0.8, -0.6, 0), SurfaceKind.Cylinder, 8);
+    }
+
+    [Fact]
     public void A_sphere_misses_a_cylinder_it_passes_moves_away_from_or_stops_short_of()
     {
         var past = new SweptSphere(Origin, new D3(4, 0, 0), 0.25);
@@ -515,6 +531,38 @@ public class SweptSphereTests
         ShouldMiss(shortOf);
     }
 
+    [Theory]
+    [InlineData(1.5, 0.4, 1.5, 0.9, -1.5, -1.1)]
+    [InlineData(-1.2, 0.9, -1.4, 0.5, -1.2, -1.0)]
+    [InlineData(0.3, -1.4, 0.6, -1.3, -1.3, -0.9)]
+    [InlineData(1.5, 0.4, 1.5, 0.9, 1.5, 1.1)]
+    [InlineData(-1.2, 0.9, -1.4, 0.5, 1.2, 1.0)]
+    public void A_sphere_moving_obliquely_past_a_cylinders_rim_meets_it_a_radius_from_the_circle(double ax, double ay, double mx, double my, double mz, double rimZ)
+    {
+        // rimZ < 0: the top's rim below the start (the cylinder below it); > 0: the bottom's above it.
+        const double rc = 0.5, r = 0.25;
+        bool top = rimZ < 0;
+        var s = new SweptSphere(Origin, new D3(mx, my, mz), r);
+        s.Cylinder(ax, ay, rc, top ? rimZ - 3 : rimZ, top ? rimZ : rimZ + 3, SurfaceKind.Cylinder, 8);
+        s.Found.Should().BeTrue();
+        s.Kind.Should().Be(SurfaceKind.Cylinder);
+        D3 c = s.Move * s.T;
+        double hx = c.X - ax, hy = c.Y - ay, rho = Math.Sqrt((hx * hx) + (hy * hy));
+        var nearest = new D3(ax + (hx * rc / rho), ay + (hy * rc / rho), rimZ);
+        D3 away = c - nearest;
+        away.Length.Should().BeApproximately(r, 1e-9, $"the centre {c} is a radius from the circle");
+        rho.Should().BeGreaterThan(rc, "beside the side");
+        ((c.Z - rimZ) * (top ? 1 : -1)).Should().BeGreaterThan(0, "beyond the cap");
+        s.Normal.X.Should().BeApproximately(away.X / r, 1e-7);
+        s.Normal.Y.Should().BeApproximately(away.Y / r, 1e-7);
+        s.Normal.Z.Should().BeApproximately(away.Z / r, 1e-7);
+
+        // Just before it, the centre is farther than the radius from the circle.
+        D3 before = s.Move * (s.T - 1e-7);
+        double bx = before.X - ax, by = before.Y - ay, brho = Math.Sqrt((bx * bx) + (by * by));
+        Math.Sqrt(((brho - rc) * (brho - rc)) + ((before.Z - rimZ) * (before.Z - rimZ))).Should().BeGreaterThan(r);
+    }
+
     [Fact]
     public void A_sphere_starting_within_the_rims_torus_is_met_at_once_moving_towards_the_circle_and_free_otherwise()
     {
@@ -528,6 +576,11 @@ public class SweptSphereTests
         var outward = new SweptSphere(Origin, new D3(1, 0, 0), 0.25);
         outward.Cylinder(-0.6, 0, 0.5, -3, -0.1, SurfaceKind.Cylinder, 8);
         ShouldMiss(outward);
+
+        // Off the axes: the axis at (−0.36, −0.48), 0.6 m away; 0.1 m above the top.
+        var diagonal = new SweptSphere(Origin, new D3(0, 0, -1), 0.25);
+        diagonal.Cylinder(-0.36, -0.48, 0.5, -3, -0.1, SurfaceKind.Cylinder, 8);
+        ShouldMeet(diagonal, 0, new D3(0.06, 0.08, 0.1) * (1 / Math.Sqrt(0.02)), SurfaceKind.Cylinder, 8);
 
         // The bottom's: 0.1 m below it, rising.
         var rise = new SweptSphere(Origin, new D3(0, 0, 1), 0.25);
