@@ -602,4 +602,31 @@ public class MoverRegistryTests
             touched[0].Should().Be(i);
         }
     }
+
+    [Fact]
+    public void An_id_filed_in_the_last_slot_of_the_states_table_of_ids_is_found()
+    {
+        PhysicsEngine engine = MoverSmokeTests.Field();
+        Movers movers = engine.Movers;
+        movers.Add(1, MoverKit.Human, At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Creature);
+        movers.Commit();
+        MoverFrame frame = movers.Hold()!;
+        Movers.Release(frame);
+        uint last = 2;
+        while (frame.IdSlot(last) != frame.Mask)
+        {
+            last++;
+        }
+
+        var state = new MoverState(MoverKind.Creature, IgnoresCreatures: true);
+        movers.Add(last, MoverKit.Human, At(engine, Door + new Vector2(0f, 10f)), Outdoor, Quaternion.Identity, state);
+        movers.Commit();
+        movers.Commit();
+        MoverFrame now = movers.Hold()!;
+        Movers.Release(now);
+        now.Mask.Should().Be(frame.Mask, "the same table");
+        now.StateOf(last).Should().Be(state);
+        now.StateOf(1).Should().Be(MoverState.Creature);
+        now.StateOf(last + 1).Should().Be(MoverState.Unregistered);
+    }
 }
