@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Casting;
 /// A cast allocates nothing (indoors through portals, outdoors over terrain and shells, with movers near); bad input is
 /// refused with an <see cref="ArgumentException"/> naming the parameter; a cast from land not loaded answers at once.
 /// </summary>
+[Trait("Mutation", "SweptSphere")]
 public class CastApiTests(ITestOutputHelper output)
 {
     private const int Rounds = 5;

@@ -11,6 +11,7 @@ namespace AcDream.Core.Tests.Casting;
 /// pieces and one that would need more ends where its last piece began (kind <see cref="SurfaceKind.None"/>), never
 /// answering "met nothing" for a path it did not look at; a cast of zero length meets nothing.
 /// </summary>
+[Trait("Mutation", "SweptSphere")]
 public class CastLimitTests
 {
     public static TheoryData<string> Frames() => new() { "centred", "global" };

@@ -10,6 +10,7 @@ namespace AcDream.Core.Tests.Casting;
 /// and a corner, onto a cylinder's side, cap and rim, grazing a face at 1e-3 rad, missing by a millimetre; and its
 /// terrain split against the game's rule as the engine holds it.
 /// </summary>
+[Trait("Mutation", "SweptSphere")]
 public class CastReferenceTests(ITestOutputHelper output)
 {
     private const double Exact = 1e-9;

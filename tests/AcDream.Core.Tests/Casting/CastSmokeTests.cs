@@ -5,6 +5,7 @@ using Xunit;
 
 namespace AcDream.Core.Tests.Casting;
 
+[Trait("Mutation", "SweptSphere")]
 public class CastSmokeTests
 {
     [Fact]

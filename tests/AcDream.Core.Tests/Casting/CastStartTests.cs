@@ -10,6 +10,7 @@ namespace AcDream.Core.Tests.Casting;
 /// to land not loaded, and from another cast's rounded answer in the global frame (casts chained, as the chase camera's
 /// slide is). Each was once answered wrongly.
 /// </summary>
+[Trait("Mutation", "SweptSphere")]
 public class CastStartTests
 {
     public static TheoryData<string> Frames() => new() { "centred", "global" };

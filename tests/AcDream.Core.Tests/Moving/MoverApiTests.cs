@@ -5,6 +5,7 @@ using AcDream.Testing;
 namespace AcDream.Core.Tests.Moving;
 
 /// <summary>Bad input to the movers is refused with an error naming the argument, the id and what is wrong; moving and committing allocate nothing.</summary>
+[Trait("Mutation", "Movers")]
 public class MoverApiTests
 {
     private static readonly Vector3 Somewhere = new(100f, 100f, 50f);
