@@ -228,6 +228,11 @@ public class BodySweepClosedFormTests
         var hit = WallHit.None;
         BodySweep.SweepPolygon(Triangle, new Vector2(-192f, 0f), Move(new Vector2(-181f, 0f), new Vector2(-8f, 0f), 2f, 4f), ref hit);
         hit.T.Should().BeApproximately(0.3125f, 1e-5f);
+
+        // The north neighbour's: moved along Y.
+        var north = WallHit.None;
+        BodySweep.SweepPolygon(Triangle, new Vector2(0f, 192f), Move(new Vector2(11f, 192f), new Vector2(-8f, 0f), 2f, 4f), ref north);
+        north.T.Should().BeApproximately(0.3125f, 1e-5f);
     }
 
     /// <summary>
