@@ -10,6 +10,8 @@ namespace AcDream.Core.Tests.Behavior;
 /// wider than the body is passed at angles up to 60° from its normal, both ways; nothing narrower is; and
 /// from outside, a building's cell walls stop the body (doors only is geometry) while its doorway lets it in.
 /// </summary>
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class BodyHoltburgTests
 {
     private const float GroundZ = 94f;

@@ -40,6 +40,8 @@ public class BodySlideTests
 
     [Theory]
     [MemberData(nameof(Walls))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void Resolve_PushingDiagonallyAlongAWallFrameAfterFrame_NeverStops(float yaw, int lb, bool global)
     {
         // A 100 m room; the mover starts 2 m off its east wall and walks at 63° into it (atan 2) for 90 m at
@@ -111,6 +113,8 @@ public class BodySlideTests
 
     [Theory]
     [MemberData(nameof(Corners))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void Resolve_PushingIntoAConcaveCorner_ComesToRestAndStaysBitForBit(float yaw, int lb, bool global)
     {
         // A 10 m room; movers from random places within 2 m of its north-east corner push at it, at
@@ -146,6 +150,8 @@ public class BodySlideTests
     [InlineData(0f, 0xA9, false)]
     [InlineData(41f, 0xA9, false)]
     [InlineData(41f, 0xFE, true)]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void Resolve_PassingAThinWallsEnd_RoundsItAtTheRadiusAsTheReference(float yaw, int lb, bool global)
     {
         // A free-standing wall of zero thickness (cell-local x = 5, y 2..6). Movers walk north past its top end
@@ -224,6 +230,8 @@ public class BodySlideTests
     [InlineData(33f, 0xA9, false)]
     [InlineData(200.3f, 0x77, false)]
     [InlineData(33f, 0xFE, true)]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void Resolve_WedgedBetweenAWallAndADoorJamb_NeverSlidesAgainstTheMoveAndAgreesWithTheReference(float yaw, int lb, bool global)
     {
         // Room A (6 × 5) has a doorway into room B in its east wall from y 0.15 to 1.15: a 0.15 m stub of
@@ -273,6 +281,8 @@ public class BodySlideTests
     [InlineData(17f)]
     [InlineData(52f)]
     [InlineData(128f)]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void Resolve_LongSweptMovesAtTheWorldsFarCorner_EndWhereThePathEnds(float yaw)
     {
         // The global frame at landblock 0xFEFE (float spacing 3.9 mm), the player's options (sub-steps of

@@ -6,6 +6,8 @@ using static AcDream.Core.Tests.TestData;
 namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>First checks of the body: a slide along a wall, a stop in a corner, no tunnelling at speed.</summary>
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class BodySmokeTests
 {
     private static readonly MovementOptions WithBody = new() { Body = new MoverBody(0.5f, 1.8f) };

@@ -8,6 +8,8 @@ namespace AcDream.Core.Tests.Behavior;
 /// at a wall's end: a wall from (0, 0) to (10, 0), a disc of contact radius 0.5 m whose rounding sink is 20 µm (its
 /// graze: 0.5 m less the sink and the contact tolerance, 0.49988 m).
 /// </summary>
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class BodySweepTests
 {
     private static readonly Vector2 A = new(0f, 0f), B = new(10f, 0f);

@@ -11,6 +11,8 @@ namespace AcDream.Core.Tests.Behavior;
 /// to the body's height (what is higher is above its head), and a gable wall of a neighbour's building across
 /// the seam where it stands. Both world frames; the player's body (radius 0.48 m, height 1.2 m here), step 0.6 m.
 /// </summary>
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class BodyWallTests
 {
     private const float Step = 0.6f;

@@ -16,6 +16,8 @@ namespace AcDream.Core.Tests.Behavior;
 /// the centred world frame.
 /// </summary>
 [Trait("Mutation", "ObjectQueries")]
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class CellarStairTests
 {
     private const float Step = 0.6f;

@@ -31,6 +31,8 @@ public class CylinderTests(ITestOutputHelper output)
     [InlineData(90f)]
     [InlineData(200f)]
     [InlineData(315f)]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_point_is_refused_entering_the_trunk(float direction)
     {
         PhysicsEngine engine = Forest();
@@ -119,6 +121,8 @@ public class CylinderTests(ITestOutputHelper output)
     }
 
     [Fact]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void Random_moves_round_the_trunk_never_overlap_it_by_more_than_a_millimetre()
     {
         PhysicsEngine engine = Forest();

@@ -16,6 +16,8 @@ namespace AcDream.Core.Tests.Behavior;
 /// answer with the report is the answer without it, bit for bit.
 /// </summary>
 [Trait("Mutation", "ObjectQueries")]
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public sealed class MoveReportTests(ITestOutputHelper output)
 {
     private const uint Outdoors = 0xA9B40000;

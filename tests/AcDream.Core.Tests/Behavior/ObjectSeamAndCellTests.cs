@@ -7,6 +7,8 @@ namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>Objects at a landblock seam and inside a cell.</summary>
 [Trait("Mutation", "ObjectQueries")]
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class ObjectSeamAndCellTests
 {
     private const uint West = 0x5050FFFF;

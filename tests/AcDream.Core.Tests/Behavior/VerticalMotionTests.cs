@@ -120,6 +120,8 @@ public class VerticalMotionTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Frames))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_jump_onto_the_plinth_from_beside_it_lands_on_it(string frame)
     {
         PhysicsEngine e = Holtburg(frame, out List<ObjectSurface> objects);
@@ -146,6 +148,8 @@ public class VerticalMotionTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Frames))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_fall_through_the_stairwell_opening_lands_on_the_cellar_floor(string frame)
     {
         PhysicsEngine e = Holtburg(frame, out List<ObjectSurface> objects);
@@ -174,6 +178,8 @@ public class VerticalMotionTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Frames))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_fall_from_50_m_lands_within_one_frame_of_the_analytic_time(string frame)
     {
         PhysicsEngine e = Holtburg(frame, out List<ObjectSurface> objects);
@@ -247,6 +253,8 @@ public class VerticalMotionTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Frames))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_body_landing_on_a_face_too_steep_to_stand_on_slides_off_it(string frame)
     {
         // A 60° face (normal Z 0.5: above LandingZ, below FloorZ) 4 m wide, rising from 96 m at y 60 to 97.73 m at y 61,
@@ -294,6 +302,8 @@ public class VerticalMotionTests(ITestOutputHelper output)
     [InlineData(0.48f, "global")]
     [InlineData(0.3f, "centred")]
     [InlineData(1.0f, "global")]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_floor_holds_a_body_whose_centre_is_up_to_half_its_radius_past_its_edge(float radius, string frame)
     {
         // A 1 × 1 slab 4 m over the terrain (more than the step down): centred d past its east edge, the body stands on it
@@ -319,6 +329,8 @@ public class VerticalMotionTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Frames))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void The_plinth_holds_a_player_0_076_m_past_its_edge_and_edge_slide_walks_it_along_the_edge(string frame)
     {
         PhysicsEngine e = Holtburg(frame, out List<ObjectSurface> objects);
@@ -367,6 +379,8 @@ public class VerticalMotionTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Frames))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void Edge_slide_glides_along_a_rotated_boxs_edge_and_stops_head_on(string frame)
     {
         // A 4 × 4 box turned 30°, its top 2 m over the terrain (more than the step down).
@@ -413,6 +427,8 @@ public class VerticalMotionTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Frames))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_wall_is_glided_along_at_45_degrees_and_stops_a_body_head_on(string frame)
     {
         // The cottage's main block, east wall x 142.5, from outside: at 4 m/s, 30 frames.
@@ -433,6 +449,8 @@ public class VerticalMotionTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Frames))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void The_outdoor_staircase_is_climbed_by_a_body_beside_its_treads(string frame)
     {
         // Centre 0.2 m east of the treads' side edge (x 132.75): the treads under the body's edge hold it and it climbs.

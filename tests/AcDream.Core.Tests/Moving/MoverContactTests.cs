@@ -65,6 +65,8 @@ public class MoverContactTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Speeds))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_body_and_a_creature_walking_at_each_other_never_overlap(string frame, float speed)
     {
         // Both registered; each resolves its move with its own id (so it meets the other) and is moved and committed
@@ -107,6 +109,8 @@ public class MoverContactTests(ITestOutputHelper output)
     [InlineData("centred", 0.0)]
     [InlineData("centred", 0.7)]
     [InlineData("global", 2.3)]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_closed_door_blocks_from_both_sides_passes_open_holds_while_occupied_and_blocks_again(string frame, double yaw)
     {
         PhysicsEngine engine = Field(frame);
@@ -177,6 +181,8 @@ public class MoverContactTests(ITestOutputHelper output)
     [InlineData("centred", 0.3f)]
     [InlineData("global", 0.7f)]
     [InlineData("global", 0.95f)]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_body_falling_onto_a_creature_is_held_on_its_top_and_slides_off(string frame, float offset)
     {
         // A body does not stand on a mover: it is held in the air on the creature's top and slides off outward.
@@ -212,6 +218,8 @@ public class MoverContactTests(ITestOutputHelper output)
     [Theory]
     [InlineData("centred")]
     [InlineData("global")]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_fast_fall_that_slides_off_one_creature_never_ends_inside_the_next(string frame)
     {
         // Falls of 1.6 m a call onto a creature's top near its side, another creature beyond that side: the slide off
@@ -241,6 +249,8 @@ public class MoverContactTests(ITestOutputHelper output)
     [Theory]
     [InlineData("centred")]
     [InlineData("global")]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_mover_lower_than_the_step_stops_a_body_and_a_point(string frame)
     {
         // A rat: 0.3 m by 0.5 m, under a player's 0.6 m step; a body does not step onto a mover, so it must stop.
@@ -265,6 +275,8 @@ public class MoverContactTests(ITestOutputHelper output)
     }
 
     [Fact]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_creature_across_a_seam_stops_a_body_in_the_neighbour_landblock()
     {
         const uint east = 0x7B3BFFFF;
@@ -287,6 +299,8 @@ public class MoverContactTests(ITestOutputHelper output)
     }
 
     [Fact]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_creature_in_a_room_stops_a_body_and_a_point_indoors()
     {
         // The main room of the cottage (0xA9B40143): a creature in its middle.

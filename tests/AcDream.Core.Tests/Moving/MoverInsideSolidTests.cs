@@ -107,6 +107,8 @@ public class MoverInsideSolidTests(ITestOutputHelper output)
     [InlineData("centred")]
     [InlineData("global")]
     [InlineData("far")]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_body_in_a_pen_of_walls_facing_in_walks_to_its_far_wall_and_no_further(string frame)
     {
         // Walls facing in wind the other way round the body: they close no solid, and the body inside walks freely
@@ -134,6 +136,8 @@ public class MoverInsideSolidTests(ITestOutputHelper output)
     [InlineData("global", -1f)]
     [InlineData("far", -0.2f)]
     [InlineData("far", -1f)]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_body_inside_a_door_slab_does_not_walk_deeper_into_it(string frame, float dx)
     {
         // The slab 1.2 × 0.26 × 2.2 m at (100, 100), yaw 0; the body's centre 0.1 m inside its +X face: 0.58 m deep.
@@ -165,6 +169,8 @@ public class MoverInsideSolidTests(ITestOutputHelper output)
     [InlineData("centred")]
     [InlineData("global")]
     [InlineData("far")]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_body_sliding_along_the_inside_of_a_turned_slab_frame_after_frame_does_not_sink_deeper(string frame)
     {
         // The same move every frame along the slab's nearest side and a little into it, from 0.03 m inside it and from
@@ -194,6 +200,8 @@ public class MoverInsideSolidTests(ITestOutputHelper output)
     }
 
     [Fact]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_door_does_not_close_on_a_creature_wholly_inside_its_slab()
     {
         PhysicsEngine engine = Field("centred");

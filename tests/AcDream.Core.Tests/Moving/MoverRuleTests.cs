@@ -10,6 +10,8 @@ namespace AcDream.Core.Tests.Moving;
 /// the target is named as touched exactly when it is met.
 /// </summary>
 [Trait("Mutation", "Movers")]
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class MoverRuleTests(ITestOutputHelper output)
 {
     private static readonly ObjectDescriptionFlags[] PlayerBits =

@@ -11,6 +11,8 @@ namespace AcDream.Core.Tests.Regression;
 /// seam into the box the body sweeps is met by the shortcut's test as by the plan, though the mover's own
 /// landblock lists nothing there.
 /// </summary>
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class BodyOpenGroundSeamTests(ITestOutputHelper output)
 {
     private const float GroundZ = 94f;

@@ -50,6 +50,8 @@ public class CrowdedWallTests(ITestOutputHelper output)
 
     [Theory]
     [MemberData(nameof(Posts))]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_long_move_stops_at_a_beam_however_many_posts_stand_elsewhere(string frame, int posts)
     {
         // Thin posts (r 0.02 m, 3 m) on a grid over local x 20..40, y 60..130, away from the path; a beam 0.3 m
@@ -75,6 +77,8 @@ public class CrowdedWallTests(ITestOutputHelper output)
     [Theory]
     [InlineData("centred")]
     [InlineData("global")]
+    [Trait("Mutation", "WallSet")]
+    [Trait("Mutation", "BodySweep")]
     public void A_full_wall_stops_a_long_move_and_a_fast_frame_with_many_posts_behind(string frame)
     {
         var objects = new List<ObjectSurface>();
@@ -100,6 +104,7 @@ public class CrowdedWallTests(ITestOutputHelper output)
     [InlineData("centred", 7000, 3)]
     [InlineData("global", 7000, 4)]
     [InlineData("centred", 800, 5)]
+    [Trait("Mutation", "WallSet")]
     public void The_body_never_ends_inside_a_post_or_a_box_among_thousands(string frame, int count, int seed)
     {
         // Posts and boxes at random over the east half of the landblock, many of them packed into a 40 m square

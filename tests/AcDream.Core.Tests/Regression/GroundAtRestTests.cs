@@ -13,6 +13,8 @@ namespace AcDream.Core.Tests.Regression;
 /// there again climbed onto it).
 /// </summary>
 [Trait("Mutation", "ObjectQueries")]
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class GroundAtRestTests
 {
     private const uint Landblock = 0xFDFDFFFFu;

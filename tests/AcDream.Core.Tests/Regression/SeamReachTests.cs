@@ -12,6 +12,8 @@ namespace AcDream.Core.Tests.Regression;
 /// wall 3.5 m into its landblock, stops at it (it walked through before, both frames).
 /// </summary>
 [Trait("Mutation", "ObjectQueries")]
+[Trait("Mutation", "WallSet")]
+[Trait("Mutation", "BodySweep")]
 public class SeamReachTests
 {
     private const float GroundZ = 94f;
