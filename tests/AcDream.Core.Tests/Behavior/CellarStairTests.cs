@@ -16,6 +16,7 @@ namespace AcDream.Core.Tests.Behavior;
 /// the centred world frame.
 /// </summary>
 [Trait("Mutation", "ObjectQueries")]
+[Trait("Mutation", "PortalTraversal")]
 public class CellarStairTests
 {
     private const float Step = 0.6f;

@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Behavior;
 /// and a door to the outdoors on a landblock's edge (the next landblock's terrain, unloaded, off the world).
 /// Both world frames.
 /// </summary>
+[Trait("Mutation", "PortalTraversal")]
 public class PortalSearchTests
 {
     private const float Step = 0.6f;

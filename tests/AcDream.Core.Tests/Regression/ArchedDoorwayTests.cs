@@ -10,6 +10,7 @@ namespace AcDream.Core.Tests.Regression;
 /// its shoulders). The wall polygons over its shoulders lie in the portal's plane with their centres inside its bounding
 /// rectangle, and were once left out as the doorway's cover: a ray over a shoulder passed through the wall.
 /// </summary>
+[Trait("Mutation", "PortalTraversal")]
 public class ArchedDoorwayTests
 {
     [Theory]

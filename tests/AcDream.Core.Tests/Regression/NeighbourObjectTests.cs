@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Regression;
 /// cellar 0xA9B40174 and rises 0.164 m above the floor opening (z 93.636) into the shaft: moving into the landing, a point
 /// mover and a body stand on it and never end with their feet in it, as from the cellar.
 /// </summary>
+[Trait("Mutation", "PortalTraversal")]
 public class NeighbourObjectTests(ITestOutputHelper output)
 {
     private const uint Shaft = 0xA9B40175, Cellar = 0xA9B40174;

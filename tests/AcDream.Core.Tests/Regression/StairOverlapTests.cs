@@ -13,6 +13,7 @@ namespace AcDream.Core.Tests.Regression;
 /// opening whose move ends over the floor above (within the step) climbs out through the opening.
 /// </summary>
 [Trait("Mutation", "ObjectQueries")]
+[Trait("Mutation", "PortalTraversal")]
 public class StairOverlapTests
 {
     private static PhysicsEngine Engine(string frame) => RealObjects.HoltburgWithCellarStairs(frame);
