@@ -189,4 +189,33 @@ public class ObjectQueryEdgeTests
         (inside.Wall, inside.Rises).Should().Be((ramp, true), "inside a cell: as outdoors");
         inside.T.Should().Be(outdoor.T);
     }
+
+    [Theory]
+    [InlineData("west", true)]
+    [InlineData("east", true)]
+    [InlineData("south", false)]
+    [InlineData("north", false)]
+    public void A_move_exactly_along_the_edge_of_a_ramps_grown_bounds_meets_its_rise(string side, bool northward)
+    {
+        // A ramp rising northward (for the west and east sides) or eastward (south and north), its foot 0.25 m under the
+        // line; the move runs up it exactly along one side of its floors' bounds (grown by the edge tolerance), from 2 m
+        // before its foot to 2 m onto it: the plane meets the line 1 m onto it, 3/4 of the move, within the tolerance
+        // of the ramp's side.
+        ObjectSurface ramp = northward
+            ? Object(0x01000912, [new Vector3(40f, 40f, H - 0.25f), new Vector3(44f, 40f, H - 0.25f), new Vector3(44f, 44f, H + 0.75f), new Vector3(40f, 44f, H + 0.75f)])
+            : Ramp(0x01000913, H - 0.25f);
+        Vector2 min = ramp.FloorMin, max = ramp.FloorMax;
+        float along = side switch { "west" => min.X, "east" => max.X, "south" => min.Y, _ => max.Y };
+        (Vector2 from, Vector2 to, Vector2 at) = northward
+            ? (new Vector2(along, 38f), new Vector2(along, 42f), new Vector2(along, 41f))
+            : (new Vector2(38f, along), new Vector2(42f, along), new Vector2(41f, along));
+        ramp.TryFloorBelow(at.X, at.Y, H, out float z).Should().BeTrue($"{side}: the rise's point is on the ramp within the tolerance");
+        z.Should().BeApproximately(H, 1e-5f);
+        Vector3 down = northward ? -Vector3.UnitY : -Vector3.UnitX;
+        foreach (var (where, r) in new[] { ("outdoors", Outdoor(Land(ramp), from, to)), ("inside a cell", Inside([ramp], from, to)) })
+        {
+            (r.Wall, r.Rises, r.Normal).Should().Be((ramp, true, down), $"{side}, {where}");
+            r.T.Should().BeApproximately(0.75f, 1e-6f, $"{side}, {where}");
+        }
+    }
 }
