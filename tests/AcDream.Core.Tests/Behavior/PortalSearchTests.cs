@@ -278,6 +278,30 @@ public class PortalSearchTests
         }
     }
 
+    /// <summary>
+    /// A low cellar (floor 94 m) under a room (floor 95 m) with an opening in its ceiling: a mover with its feet between
+    /// them stepping out from under the opening over the cellar's floor, beside which the room's floor is, lands on the
+    /// one nearer its feet, and on the cellar's own floor when both are equally near (0.5 m).
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Frames))]
+    public void Under_an_opening_the_floor_above_beside_it_wins_when_nearer_the_feet_and_the_cells_own_floor_on_a_tie(string frame)
+    {
+        Vector3[] opening = Square(100f, 100f, 104f, 102f, GroundZ + 1f);
+        CellSurface cellar = new CellBuilder(0xA9B40100u).Floor(94f, 98f, 110f, 104f, GroundZ)
+            .Portal(0x0101, new Vector3(102f, 101f, GroundZ + 0.5f), opening).Build();
+        CellSurface room = new CellBuilder(0xA9B40101u).Floor(104f, 98f, 110f, 104f, GroundZ + 1f).Floor(94f, 98f, 100f, 104f, GroundZ + 1f)
+            .Portal(0x0100, new Vector3(102f, 101f, GroundZ + 2f), opening).Build();
+        PhysicsEngine engine = Engine(frame);
+        engine.AddLandblock(Holtburg, FlatTerrain(GroundZ - 20f), [cellar, room]);
+        Vector3 origin = engine.GetLandblockOrigin(Holtburg);
+
+        ResolveResult tie = engine.Resolve(origin + new Vector3(103.5f, 101f, GroundZ + 0.5f), 0xA9B40100u, new Vector3(1f, 0f, 0f), Step);
+        (tie.Outcome, tie.CellId, tie.Position.Z).Should().Be((ResolveOutcome.Moved, 0xA9B40100u, GroundZ), $"{frame}: both 0.5 m from the feet: {tie}");
+        ResolveResult above = engine.Resolve(origin + new Vector3(103.5f, 101f, GroundZ + 0.75f), 0xA9B40100u, new Vector3(1f, 0f, 0f), Step);
+        (above.Outcome, above.CellId, above.Position.Z).Should().Be((ResolveOutcome.Moved, 0xA9B40101u, GroundZ + 1f), $"{frame}: the room's floor nearer: {above}");
+    }
+
     /// <summary>A 4 m deep room against the landblock's east (or north) edge, with a 2 m door in the edge to the outdoors.</summary>
     private static CellSurface DoorCell(uint id, bool east)
     {
