@@ -8,6 +8,7 @@ namespace AcDream.Core.Tests.Api;
 /// or options naming no body answers bit for bit as the four-argument call, in both world frames; and a body
 /// touching nothing changes no answer.
 /// </summary>
+[Trait("Mutation", "PortalTraversal")]
 public class DefaultOptionsTests
 {
     [Theory]

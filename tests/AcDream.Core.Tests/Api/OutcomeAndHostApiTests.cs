@@ -9,6 +9,7 @@ using static AcDream.Core.Tests.TestData;
 namespace AcDream.Core.Tests.Api;
 
 /// <summary>Issue 9: the engine says why a move stopped (outcome and normal), and the host's helpers; the object queries and the surfaces seen by callers.</summary>
+[Trait("Mutation", "PortalTraversal")]
 public class OutcomeAndHostApiTests
 {
     private const float Step = 0.5f;

@@ -5,6 +5,7 @@ using static AcDream.Core.Tests.TestData;
 
 namespace AcDream.Core.Tests.Behavior;
 
+[Trait("Mutation", "PortalTraversal")]
 public class CellSurfaceTests
 {
     private const uint CellId = 0xA9B40100u;

@@ -18,6 +18,7 @@ namespace AcDream.Core.Tests.Behavior;
 [Trait("Mutation", "ObjectQueries")]
 [Trait("Mutation", "WallSet")]
 [Trait("Mutation", "BodySweep")]
+[Trait("Mutation", "PortalTraversal")]
 public class CellarStairTests
 {
     private const float Step = 0.6f;

@@ -5,6 +5,7 @@ using static AcDream.Core.Tests.TestData;
 namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>The real Holtburg cells (landblock 0xA9B4), on flat terrain at the cottage's floor height.</summary>
+[Trait("Mutation", "PortalTraversal")]
 public class HoltburgCellsTests
 {
     private const float PlayerStep = 0.5f;

@@ -5,6 +5,7 @@ using static AcDream.Core.Tests.TestData;
 namespace AcDream.Core.Tests.Behavior;
 
 /// <summary>The opt-in effects: each off and on.</summary>
+[Trait("Mutation", "PortalTraversal")]
 public class MovementOptionsTests
 {
     private const float Step = 0.5f;

@@ -4,6 +4,7 @@ using static AcDream.Core.Tests.TestData;
 
 namespace AcDream.Core.Tests.Behavior;
 
+[Trait("Mutation", "PortalTraversal")]
 public class PhysicsEngineTests
 {
     private const float Step = 0.5f;

@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Behavior;
 /// and a door to the outdoors on a landblock's edge (the next landblock's terrain, unloaded, off the world).
 /// Both world frames.
 /// </summary>
+[Trait("Mutation", "PortalTraversal")]
 public class PortalSearchTests
 {
     private const float Step = 0.6f;
@@ -244,6 +245,61 @@ public class PortalSearchTests
             ResolveResult off = edge.Resolve(atEdge, 0xFE100100u, delta, Step);
             (off.Outcome, off.Position).Should().Be((ResolveOutcome.EdgeOfWorld, atEdge), $"{frame}: {off}");
         }
+    }
+
+    /// <summary>
+    /// A room (0x0101) whose only portals are floor openings far below, away from the move, to two cells beside it
+    /// (0x0100, the first cell of the landblock, and 0x0102) whose floors, both at the room's height, overlap east of
+    /// it: no doorway is crossed and no opening is under the end, so the first portal neighbour with a floor under the
+    /// end takes the mover, the one listed first in the room's portals when both are equally near the feet.
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Frames))]
+    public void With_no_portal_deciding_the_first_portal_neighbour_with_a_floor_under_the_end_takes_the_mover(string frame)
+    {
+        foreach (bool firstListedFirst in new[] { true, false })
+        {
+            Vector3[] low = Square(100f, 100f, 101f, 101f, GroundZ - 10f), lower = Square(101f, 100f, 102f, 101f, GroundZ - 10f);
+            var room = new CellBuilder(0xA9B40101u).Floor(100f, 100f, 104f, 104f, GroundZ);
+            room = firstListedFirst
+                ? room.Portal(0x0100, new Vector3(100.5f, 100.5f, GroundZ), low).Portal(0x0102, new Vector3(101.5f, 100.5f, GroundZ), lower)
+                : room.Portal(0x0102, new Vector3(101.5f, 100.5f, GroundZ), lower).Portal(0x0100, new Vector3(100.5f, 100.5f, GroundZ), low);
+            CellSurface first = new CellBuilder(0xA9B40100u).Floor(104f, 100f, 108f, 104f, GroundZ).Portal(0x0101, new Vector3(100.5f, 100.5f, GroundZ - 11f), low).Build();
+            CellSurface third = new CellBuilder(0xA9B40102u).Floor(104f, 102f, 108f, 106f, GroundZ).Portal(0x0101, new Vector3(101.5f, 100.5f, GroundZ - 11f), lower).Build();
+            PhysicsEngine engine = Engine(frame);
+            engine.AddLandblock(Holtburg, FlatTerrain(GroundZ - 20f), [first, room.Build(), third]);
+            Vector3 start = engine.GetLandblockOrigin(Holtburg) + new Vector3(103f, 103f, GroundZ);
+
+            ResolveResult only = engine.Resolve(start, 0xA9B40101u, new Vector3(2f, -2f, 0f), Step);
+            (only.Outcome, only.CellId, only.Position.Z).Should().Be((ResolveOutcome.Moved, 0xA9B40100u, GroundZ), $"{frame}: over the first cell's floor alone: {only}");
+            ResolveResult both = engine.Resolve(start, 0xA9B40101u, new Vector3(2f, 0f, 0f), Step);
+            uint expected = firstListedFirst ? 0xA9B40100u : 0xA9B40102u;
+            (both.Outcome, both.CellId, both.Position.Z).Should().Be((ResolveOutcome.Moved, expected, GroundZ), $"{frame}: over both floors, the first listed: {both}");
+        }
+    }
+
+    /// <summary>
+    /// A low cellar (floor 94 m) under a room (floor 95 m) with an opening in its ceiling: a mover with its feet between
+    /// them stepping out from under the opening over the cellar's floor, beside which the room's floor is, lands on the
+    /// one nearer its feet, and on the cellar's own floor when both are equally near (0.5 m).
+    /// </summary>
+    [Theory]
+    [MemberData(nameof(Frames))]
+    public void Under_an_opening_the_floor_above_beside_it_wins_when_nearer_the_feet_and_the_cells_own_floor_on_a_tie(string frame)
+    {
+        Vector3[] opening = Square(100f, 100f, 104f, 102f, GroundZ + 1f);
+        CellSurface cellar = new CellBuilder(0xA9B40100u).Floor(94f, 98f, 110f, 104f, GroundZ)
+            .Portal(0x0101, new Vector3(102f, 101f, GroundZ + 0.5f), opening).Build();
+        CellSurface room = new CellBuilder(0xA9B40101u).Floor(104f, 98f, 110f, 104f, GroundZ + 1f).Floor(94f, 98f, 100f, 104f, GroundZ + 1f)
+            .Portal(0x0100, new Vector3(102f, 101f, GroundZ + 2f), opening).Build();
+        PhysicsEngine engine = Engine(frame);
+        engine.AddLandblock(Holtburg, FlatTerrain(GroundZ - 20f), [cellar, room]);
+        Vector3 origin = engine.GetLandblockOrigin(Holtburg);
+
+        ResolveResult tie = engine.Resolve(origin + new Vector3(103.5f, 101f, GroundZ + 0.5f), 0xA9B40100u, new Vector3(1f, 0f, 0f), Step);
+        (tie.Outcome, tie.CellId, tie.Position.Z).Should().Be((ResolveOutcome.Moved, 0xA9B40100u, GroundZ), $"{frame}: both 0.5 m from the feet: {tie}");
+        ResolveResult above = engine.Resolve(origin + new Vector3(103.5f, 101f, GroundZ + 0.75f), 0xA9B40100u, new Vector3(1f, 0f, 0f), Step);
+        (above.Outcome, above.CellId, above.Position.Z).Should().Be((ResolveOutcome.Moved, 0xA9B40101u, GroundZ + 1f), $"{frame}: the room's floor nearer: {above}");
     }
 
     /// <summary>A 4 m deep room against the landblock's east (or north) edge, with a 2 m door in the edge to the outdoors.</summary>

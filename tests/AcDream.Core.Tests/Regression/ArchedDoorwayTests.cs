@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Regression;
 /// </summary>
 [Trait("Mutation", "WallSet")]
 [Trait("Mutation", "BodySweep")]
+[Trait("Mutation", "PortalTraversal")]
 public class ArchedDoorwayTests
 {
     [Theory]

@@ -12,6 +12,7 @@ namespace AcDream.Core.Tests.Regression;
 /// the engine.
 /// </summary>
 [Trait("Mutation", "ObjectQueries")]
+[Trait("Mutation", "PortalTraversal")]
 public class GroundHonestyTests
 {
     private const uint Lb = 0xA9B4FFFFu;

@@ -14,6 +14,7 @@ namespace AcDream.Core.Tests.Regression;
 /// </summary>
 [Trait("Mutation", "WallSet")]
 [Trait("Mutation", "BodySweep")]
+[Trait("Mutation", "PortalTraversal")]
 public class NeighbourObjectTests(ITestOutputHelper output)
 {
     private const uint Shaft = 0xA9B40175, Cellar = 0xA9B40174;

@@ -15,6 +15,7 @@ namespace AcDream.Core.Tests.Regression;
 [Trait("Mutation", "ObjectQueries")]
 [Trait("Mutation", "WallSet")]
 [Trait("Mutation", "BodySweep")]
+[Trait("Mutation", "PortalTraversal")]
 public class StairOverlapTests
 {
     private static PhysicsEngine Engine(string frame) => RealObjects.HoltburgWithCellarStairs(frame);

@@ -5,6 +5,7 @@ using static AcDream.Core.Tests.TestData;
 namespace AcDream.Core.Tests.Robustness;
 
 /// <summary>Tiny, huge and zero moves and step-height boundaries: deterministic, documented answers.</summary>
+[Trait("Mutation", "PortalTraversal")]
 public class MoveTests
 {
     private const uint A = 0x1010FFFFu;

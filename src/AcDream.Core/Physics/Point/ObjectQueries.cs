@@ -132,17 +132,21 @@ internal static class ObjectQueries
         }
     }
 
-    /// <summary>Whether <paramref name="line"/> crosses a wall of <paramref name="o"/> before <c>hit.T</c>, or one of its floors rising through it; the object's bounds reject it first.</summary>
+    /// <summary>
+    /// Whether <paramref name="line"/> crosses a wall of <paramref name="o"/> before <c>hit.T</c>, or one of its floors rising
+    /// through it; the object's height range rejects it first, then its walls' bounds the walls (its floors' bounds, grown
+    /// by the edge tolerance as the floors are sampled, are tested by <see cref="ObjectSurface.RisesThrough"/>).
+    /// </summary>
     private static bool Crosses(ObjectSurface o, in StepLine line, ref ObjectHit hit)
     {
-        Vector2 lo = line.Lo, hi = line.Hi;
         float h = line.H;
-        if (!(o.BoundsMin.X <= hi.X && o.BoundsMax.X >= lo.X && o.BoundsMin.Y <= hi.Y && o.BoundsMax.Y >= lo.Y && o.BoundsMin.Z < h && o.BoundsMax.Z > h))
+        if (!(o.BoundsMin.Z < h && o.BoundsMax.Z > h))
         {
             return false;
         }
 
-        bool met = line.FirstCrossing(o.Walls, ref hit);
+        Vector2 lo = line.Lo, hi = line.Hi, wallMin = o.Walls.Min, wallMax = o.Walls.Max;
+        bool met = wallMin.X <= hi.X && wallMax.X >= lo.X && wallMin.Y <= hi.Y && wallMax.Y >= lo.Y && line.FirstCrossing(o.Walls, ref hit);
         hit.Rises &= !met;
         if (o.RisesThrough(in line, ref hit.T, ref hit.Normal))
         {
