@@ -404,15 +404,23 @@ public sealed class MoverHostTests(DefaultWalk walk) : IClassFixture<DefaultWalk
         Vector3 beside = creatures[0].Mode!.Position + new Vector3(1.0f, 0f, 0f); // (its walls 0.52 m away, within the call's reach)
         engine.Resolve(beside, creatures[0].Mode!.CellId, new Vector3(-0.1f, 0f, 0f), 0.6f, MovementOptions.Player);
 
+        // Three windows of 100 frames: a cost per frame shows in every window; a one-off of the runtime (a type first
+        // touched, code compiled again at a higher tier while other tests run beside this one) in one at most.
         walked = 0f;
-        long start = GC.GetAllocatedBytesForCurrentThread();
-        for (int f = 0; f < 300; f++)
+        long[] windows = new long[3];
+        for (int w = 0; w < windows.Length; w++)
         {
-            Frame();
+            long start = GC.GetAllocatedBytesForCurrentThread();
+            for (int f = 0; f < 100; f++)
+            {
+                Frame();
+            }
+
+            windows[w] = GC.GetAllocatedBytesForCurrentThread() - start;
         }
 
-        long allocated = GC.GetAllocatedBytesForCurrentThread() - start;
-        allocated.Should().Be(0, "moving and committing 22 movers and resolving 21 of them, 300 frames");
+        windows.Count(bytes => bytes == 0).Should().BeGreaterThanOrEqualTo(
+            2, $"moving and committing 22 movers and resolving 21 of them allocates nothing per frame (bytes in each window of 100 frames: {string.Join(", ", windows)})");
         walked.Should().BeGreaterThan(100f, "the creatures walked meanwhile (2 m/s, three intents in four)");
         engine.Movers.Count.Should().Be(22);
     }
