@@ -206,7 +206,7 @@ public sealed class GameWindow : IDisposable
     }
 
     /// <summary>
-    /// Registers a mover in the engine (<see cref="Movers.Add"/>) in a loaded landblock: the one of
+    /// Registers a mover in the engine (<see cref="MoverRegistry.Add"/>) in a loaded landblock: the one of
     /// <paramref name="cellId"/>, which unloading removes it with. Seen by <c>Resolve</c> from the next
     /// <see cref="CommitMovers"/>. Frame thread only.
     /// </summary>
@@ -217,7 +217,7 @@ public sealed class GameWindow : IDisposable
     /// <param name="orientation">A turn about Z.</param>
     /// <param name="state">What it is and its bits (<see cref="MoverState"/>).</param>
     /// <exception cref="InvalidOperationException">The cell's landblock is not loaded.</exception>
-    /// <exception cref="ArgumentException">The engine refuses an argument (<see cref="Movers.Add"/>).</exception>
+    /// <exception cref="ArgumentException">The engine refuses an argument (<see cref="MoverRegistry.Add"/>).</exception>
     public void AddMover(uint id, MoverShape shape, Vector3 position, uint cellId, Quaternion orientation, MoverState state)
     {
         if (!_loaded.Contains(CellIds.LandblockOf(cellId)))
@@ -229,7 +229,7 @@ public sealed class GameWindow : IDisposable
     }
 
     /// <summary>
-    /// Moves a registered mover (<see cref="Movers.Move"/>: seen from the next <see cref="CommitMovers"/>); allocates
+    /// Moves a registered mover (<see cref="MoverRegistry.Move"/>: seen from the next <see cref="CommitMovers"/>); allocates
     /// nothing. A move the engine resolved stays in loaded land, so its landblock is loaded. Frame thread only.
     /// </summary>
     /// <param name="id">A registered mover's id.</param>
@@ -240,7 +240,7 @@ public sealed class GameWindow : IDisposable
     public void MoveMover(uint id, Vector3 position, uint cellId, Quaternion orientation) => Physics.Movers.Move(id, position, cellId, orientation);
 
     /// <summary>
-    /// Publishes the frame's changes to the movers (<see cref="Movers.Commit"/>): the frame loop calls it once per
+    /// Publishes the frame's changes to the movers (<see cref="MoverRegistry.Commit"/>): the frame loop calls it once per
     /// frame; every <c>Resolve</c> after it sees them all, doors told to close are closed here once nothing overlaps
     /// them. Frame thread only.
     /// </summary>
@@ -251,7 +251,7 @@ public sealed class GameWindow : IDisposable
 
     /// <summary>
     /// The unload path: removes a landblock from the engine (nothing happens if it is not registered), and the movers
-    /// whose cell is in it (<see cref="Movers.RemoveLandblock"/>; gone from the next <see cref="CommitMovers"/>).
+    /// whose cell is in it (<see cref="MoverRegistry.RemoveLandblock"/>; gone from the next <see cref="CommitMovers"/>).
     /// </summary>
     internal void UnloadLandblockLocked(uint landblockId)
     {

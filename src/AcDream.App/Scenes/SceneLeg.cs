@@ -17,7 +17,7 @@ namespace AcDream.App.Scenes;
 /// <param name="Seconds">Intent leg: its length; point leg: the time limit after which it stops unreached.</param>
 /// <param name="Jump">Jump on the leg's first frame (when the effects move the body vertically and it is on the ground).</param>
 /// <param name="JumpSkill">The jump skill for the leg (<see cref="Movement.PlayerMovementMode.JumpSkill"/>).</param>
-/// <param name="Open">A door of the scene opened on the leg's first frame, before the move (<see cref="Core.Physics.Movers.Open"/>); null: none.</param>
-/// <param name="Close">A door of the scene told to close on the leg's first frame (<see cref="Core.Physics.Movers.Close"/>: held open while a mover stands in it); null: none.</param>
+/// <param name="Open">A door of the scene opened on the leg's first frame, before the move (<see cref="Core.Physics.MoverRegistry.Open"/>); null: none.</param>
+/// <param name="Close">A door of the scene told to close on the leg's first frame (<see cref="Core.Physics.MoverRegistry.Close"/>: held open while a mover stands in it); null: none.</param>
 internal sealed record SceneLeg(string Name, Vector2? To, float Forward, float Strafe, float Turn, bool Run, bool Backward, float Seconds, bool Jump = false, int JumpSkill = Movement.PlayerMovementMode.DefaultJumpSkill,
     string? Open = null, string? Close = null);

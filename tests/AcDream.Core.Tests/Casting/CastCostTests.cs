@@ -189,7 +189,7 @@ public class CastCostTests
         }
         finally
         {
-            Movers.Release(frame);
+            MoverRegistry.Release(frame);
         }
 
         // The square of a point of landblock l's frame, clamped as the walk clamps a box (to two landblocks about it).

@@ -5,7 +5,7 @@ using AcDream.Testing;
 namespace AcDream.Core.Tests.Moving;
 
 /// <summary>Bad input to the movers is refused with an error naming the argument, the id and what is wrong; moving and committing allocate nothing.</summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 public class MoverApiTests
 {
     private static readonly Vector3 Somewhere = new(100f, 100f, 50f);
@@ -14,7 +14,7 @@ public class MoverApiTests
     public void Bad_registrations_and_changes_name_the_argument_and_the_id()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         const uint cell = MoverSmokeTests.Outdoor;
         Action zero = () => movers.Add(0, MoverKit.Human, Somewhere, cell, Quaternion.Identity, MoverState.Creature);
         zero.Should().Throw<ArgumentException>().Where(e => e.ParamName == "id" && e.Message.Contains("0x00000000"));

@@ -10,7 +10,7 @@ namespace AcDream.Core.Tests.Moving;
 /// states through every change, and the committed states a call reads: never the one being written, whole when read.
 /// Each mover is probed with rays (exact contacts) on flat ground.
 /// </summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 public class MoverRegistryTests
 {
     private const uint Landblock = MoverSmokeTests.Landblock;
@@ -88,7 +88,7 @@ public class MoverRegistryTests
     public void Orientations_that_are_not_a_turn_about_Z_are_refused_naming_the_id()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         Vector3 p = At(engine, Door);
         foreach (Quaternion q in new[]
         {
@@ -141,7 +141,7 @@ public class MoverRegistryTests
     public void Removing_and_moving_movers_leaves_each_of_the_others_where_it_is()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         float[] xs = [100f, 104f, 108f, 112f, 116f];
         for (uint i = 0; i < xs.Length; i++)
         {
@@ -202,7 +202,7 @@ public class MoverRegistryTests
         const uint east = 0x7B3BFFFF;
         PhysicsEngine engine = MoverSmokeTests.Field();
         engine.AddLandblock(east, TestData.FlatTerrain(Ground, east), []);
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         for (uint i = 0; i < 8; i++)
         {
             bool home = i % 3 != 1;
@@ -235,7 +235,7 @@ public class MoverRegistryTests
     public void A_door_moves_through_its_states_by_every_change()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         movers.Add(9, new MoverShape(MoverReference.SlabModel(1.2f, 2.2f)), At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Door);
         movers.Commit();
         movers.Close(9); // closing a closed door: nothing to do
@@ -283,7 +283,7 @@ public class MoverRegistryTests
     public void A_door_is_held_open_by_a_mover_standing_in_it_that_is_met_and_is_not_a_door(string what, bool holds)
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         movers.Add(9, new MoverShape(MoverReference.SlabModel(1.2f, 2.2f)), At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Door);
         (MoverShape shape, MoverState state, Vector2 at) = what switch
         {
@@ -320,7 +320,7 @@ public class MoverRegistryTests
         uint neighbour = (uint)(((LandblockX + dx) << 24) | ((LandblockY + dy) << 16) | 0xFFFF);
         PhysicsEngine engine = MoverSmokeTests.Field();
         engine.AddLandblock(neighbour, TestData.FlatTerrain(Ground, neighbour), []);
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
 
         // The slab turned so it lies across the seam: centred 0.2 m inside this landblock, reaching 0.4 m into the next.
         const float side = 192f;
@@ -355,7 +355,7 @@ public class MoverRegistryTests
     public void A_state_read_unheld_is_whole_and_answers_whether_a_mover_is_near()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         movers.NoneNear(LandblockX, LandblockY, new Vector2(90f), new Vector2(110f), out MoverFrame? none).Should().BeTrue("none committed");
         none.Should().BeNull();
         movers.Add(1, MoverKit.Human, At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Creature);
@@ -369,7 +369,7 @@ public class MoverRegistryTests
 
         // Being written (its sequence odd), a state read unheld is not whole: neither answer.
         MoverFrame current = movers.Hold()!;
-        Movers.Release(current);
+        MoverRegistry.Release(current);
         current.Sequence++;
         movers.NoneNear(LandblockX, LandblockY, new Vector2(150f), new Vector2(170f), out MoverFrame? torn).Should().BeFalse();
         torn.Should().BeNull();
@@ -383,15 +383,15 @@ public class MoverRegistryTests
     public void A_commit_never_rewrites_the_state_current_or_held()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         movers.Add(1, MoverKit.Human, At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Creature);
         movers.Commit();
         MoverFrame first = movers.Hold()!;
-        Movers.Release(first);
+        MoverRegistry.Release(first);
         (first.Sequence & 1).Should().Be(0, "whole");
         movers.Commit();
         MoverFrame second = movers.Hold()!;
-        Movers.Release(second);
+        MoverRegistry.Release(second);
         second.Should().NotBeSameAs(first, "the state current when the commit began may be being read unheld");
         movers.Commit();
         MoverFrame third = movers.Hold()!;
@@ -400,26 +400,26 @@ public class MoverRegistryTests
         // Held (third), and the current one after the next commit: a third state is made for the commit after.
         movers.Commit();
         MoverFrame fourth = movers.Hold()!;
-        Movers.Release(fourth);
+        MoverRegistry.Release(fourth);
         fourth.Should().BeSameAs(second);
         movers.Move(1, At(engine, Door + new Vector2(10f, 0f)), Outdoor, Quaternion.Identity);
         movers.Commit();
         MoverFrame fifth = movers.Hold()!;
-        Movers.Release(fifth);
+        MoverRegistry.Release(fifth);
         fifth.Should().NotBeSameAs(third).And.NotBeSameAs(fourth);
         third.Walls[0].Min.X.Should().BeApproximately(Door.X - MoverKit.HumanRadius, 1e-3f, "the held state still has the mover where it was");
         fifth.Walls[0].Min.X.Should().BeApproximately(Door.X + 10f - MoverKit.HumanRadius, 1e-3f);
         third.Readers.Should().Be(1);
-        Movers.Release(third);
+        MoverRegistry.Release(third);
         third.Readers.Should().Be(0);
-        Movers.Release(null);
+        MoverRegistry.Release(null);
     }
 
     [Fact]
     public void Every_state_committed_has_each_change_however_changes_removals_and_commits_interleave()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         uint Across(float x) => Ray(engine, new Vector2(x, 96f), new Vector2(x, 104f)) is { Hit: true } h ? h.Id : 0u;
         Vector3 P(float x) => At(engine, new Vector2(x, 100f));
         void Seen(params (float X, uint Id)[] expected)
@@ -471,7 +471,7 @@ public class MoverRegistryTests
     public void Removing_a_landblock_of_as_many_movers_as_the_registry_holds_forgets_every_id()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         for (int n = 15; n <= 17; n++)
         {
             for (uint i = 1; i <= n; i++)
@@ -500,7 +500,7 @@ public class MoverRegistryTests
     public void Moving_and_committing_as_many_movers_as_the_registry_has_room_for_allocates_nothing(int n)
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         movers.Add(100, new MoverShape(MoverReference.SlabModel(1.2f, 2.2f)), At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Door);
         for (uint i = 1; i < n; i++)
         {
@@ -531,7 +531,7 @@ public class MoverRegistryTests
     public void A_mover_moved_away_leaves_no_mark_where_it_was()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         movers.Add(1, MoverKit.Human, At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Creature);
         movers.Commit();
         movers.Commit();
@@ -553,7 +553,7 @@ public class MoverRegistryTests
     public void A_mover_whose_walls_end_exactly_on_a_seam_marks_no_cell_of_the_neighbour(int dx, int dy)
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
 
         // A cylinder of 0.5 m 0.5 m from the seam: its walls reach the seam and no further.
         var at = new Vector2(dx < 0 ? 0.5f : dx > 0 ? 191.5f : 100f, dy < 0 ? 0.5f : dy > 0 ? 191.5f : 100f);
@@ -561,7 +561,7 @@ public class MoverRegistryTests
         movers.Add(1, MoverShape.Cylinder(0.5f, 2f), At(engine, at), cell, Quaternion.Identity, MoverState.Creature);
         movers.Commit();
         MoverFrame frame = movers.Hold()!;
-        Movers.Release(frame);
+        MoverRegistry.Release(frame);
         (dx < 0 ? frame.Walls[0].Min.X : dx > 0 ? frame.Walls[0].Max.X : dy < 0 ? frame.Walls[0].Min.Y : frame.Walls[0].Max.Y).Should().Be(dx + dy < 0 ? 0f : 192f);
 
         // A box 1..7 m into the neighbour, along the seam where the mover stands: none near. The mover's own side: near.
@@ -579,7 +579,7 @@ public class MoverRegistryTests
         // shares its place in any table of ids hashed by their low bits): each walker walks through its creature,
         // touching it.
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         var walker = new MoverState(MoverKind.Creature, IgnoresCreatures: true);
         static Vector2 Spot(uint i) => new(10f + (4f * ((i - 1) % 10)), 20f + (4f * ((i - 1) / 10)));
         for (uint i = 1; i <= 40; i++)
@@ -607,11 +607,11 @@ public class MoverRegistryTests
     public void An_id_filed_in_the_last_slot_of_the_states_table_of_ids_is_found()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
-        Movers movers = engine.Movers;
+        MoverRegistry movers = engine.Movers;
         movers.Add(1, MoverKit.Human, At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Creature);
         movers.Commit();
         MoverFrame frame = movers.Hold()!;
-        Movers.Release(frame);
+        MoverRegistry.Release(frame);
         uint last = 2;
         while (frame.IdSlot(last) != frame.Mask)
         {
@@ -623,7 +623,7 @@ public class MoverRegistryTests
         movers.Commit();
         movers.Commit();
         MoverFrame now = movers.Hold()!;
-        Movers.Release(now);
+        MoverRegistry.Release(now);
         now.Mask.Should().Be(frame.Mask, "the same table");
         now.StateOf(last).Should().Be(state);
         now.StateOf(1).Should().Be(MoverState.Creature);

@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics;
 /// <summary>
 /// One whole state of the registered movers, as a call reads it: each mover's id, state, landblock and walls placed in
 /// that landblock's frame, filed by origin in squares of <see cref="PhysicsConstants.MoverGridCell"/> (a hash of the
-/// global square, counting-sorted). Written only by <see cref="Movers.Commit"/> while no reader holds it
+/// global square, counting-sorted). Written only by <see cref="MoverRegistry.Commit"/> while no reader holds it
 /// (<see cref="Readers"/>), then published; a call holds the one it found at its start to its end.
 /// </summary>
 internal sealed partial class MoverFrame

@@ -4,7 +4,7 @@ using AcDream.Core.Dat;
 namespace AcDream.Core.Physics;
 
 /// <summary>
-/// The solid shape of a mover (<see cref="Movers"/>) in its own frame: metres, the origin at the mover's position, Z up.
+/// The solid shape of a mover (<see cref="MoverRegistry"/>) in its own frame: metres, the origin at the mover's position, Z up.
 /// Built once and shared by any number of movers. Only walls: the physics polygons that are not floors (normal Z below
 /// <see cref="PhysicsConstants.FloorZ"/>) and upright cylinders; a body does not stand on a mover.
 /// </summary>

@@ -1,59 +1,6 @@
 namespace AcDream.Core.Physics;
 
 /// <summary>
-/// The game's physics-state bits that decide whether a mover is met (the values of the game's <c>PhysicsState</c>, so a
-/// caller maps them 1:1; the engine reads only these two).
-/// </summary>
-[Flags]
-public enum PhysicsStateFlags : uint
-{
-    /// <summary>Solid.</summary>
-    None = 0,
-
-    /// <summary>0x4: does not block; a move that touches it records the touch (a portal's swirl, an open door).</summary>
-    Ethereal = 0x4,
-
-    /// <summary>0x10: with <see cref="Ethereal"/>, not met at all (not even recorded as touched).</summary>
-    IgnoreCollisions = 0x10,
-}
-
-/// <summary>
-/// The game's object-description bits of players and creatures that the rules between two players read (the values of
-/// the game's <c>ObjectDescriptionFlags</c>, so a caller maps them 1:1; the engine reads only these four).
-/// </summary>
-[Flags]
-public enum ObjectDescriptionFlags : uint
-{
-    /// <summary>None of the four.</summary>
-    None = 0,
-
-    /// <summary>0x8: a player.</summary>
-    Player = 0x8,
-
-    /// <summary>0x20: a player-killer.</summary>
-    PlayerKiller = 0x20,
-
-    /// <summary>0x200000: impenetrable: another player does not pass through it, nor it through another.</summary>
-    Impenetrable = 0x200000,
-
-    /// <summary>0x2000000: a PK-lite player.</summary>
-    PkLite = 0x2000000,
-}
-
-/// <summary>What a mover is, for the rules of who collides with whom.</summary>
-public enum MoverKind : byte
-{
-    /// <summary>Any other thing (a cart, a chest).</summary>
-    Object = 0,
-
-    /// <summary>A creature; a player is a creature with <see cref="ObjectDescriptionFlags.Player"/>.</summary>
-    Creature,
-
-    /// <summary>A door: <see cref="Movers.Open"/> and <see cref="Movers.Close"/> apply (the door hold).</summary>
-    Door,
-}
-
-/// <summary>
 /// A mover's state: what it is and the game's bits the rules read. The rules, for a moving object M and a registered
 /// target T (<see cref="Blocks"/>, <see cref="Meets"/>): T both Ethereal and IgnoreCollisions is skipped; an Ethereal T
 /// does not block but is touched; two players pass through each other (touched) unless one is impenetrable, or both

@@ -13,7 +13,7 @@ internal partial struct Neighbourhood
     /// </summary>
     /// <returns>Whether the call holds movers (and must <see cref="Release"/> them).</returns>
     [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers committed
-    public bool MeetAlong(Movers movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self) =>
+    public bool MeetAlong(MoverRegistry movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self) =>
         HoldMovers(movers, in frame, start, cellId, reach, self);
 
     /// <summary>
@@ -21,7 +21,7 @@ internal partial struct Neighbourhood
     /// <paramref name="start"/> (seen from above), and sets this thread's record of the call (listing none); false, holding
     /// none, when no mover is near in the state committed at the call's start.
     /// </summary>
-    private bool HoldMovers(Movers movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self)
+    private bool HoldMovers(MoverRegistry movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self)
     {
         frame.Locate(start, cellId, out int x, out int y, out Vector2 local);
         Vector2 lo = local - new Vector2(reach), hi = local + new Vector2(reach);
@@ -32,7 +32,7 @@ internal partial struct Neighbourhood
 
         if (held != occupied && !held.Occupied(x, y, lo, hi))
         {
-            Physics.Movers.Release(held); // (a later state than the one looked at unheld, with none near)
+            Physics.MoverRegistry.Release(held); // (a later state than the one looked at unheld, with none near)
             return false;
         }
 

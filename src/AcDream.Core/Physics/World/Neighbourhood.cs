@@ -37,7 +37,7 @@ internal partial struct Neighbourhood
     /// </summary>
     /// <returns>Whether the call holds movers (and must <see cref="Release"/> them).</returns>
     [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers committed
-    public bool Meet(Movers movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self)
+    public bool Meet(MoverRegistry movers, in WorldFrame frame, Vector3 start, uint cellId, float reach, uint self)
     {
         if (!HoldMovers(movers, in frame, start, cellId, reach, self))
         {
@@ -135,7 +135,7 @@ internal partial struct Neighbourhood
 
         public void Release()
         {
-            Physics.Movers.Release(Frame);
+            Physics.MoverRegistry.Release(Frame);
             Frame = null;
         }
     }

@@ -2,19 +2,6 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics;
 
-/// <summary>Where a door is in its opening and closing (<see cref="Movers.Open"/>, <see cref="Movers.Close"/>).</summary>
-public enum DoorState : byte
-{
-    /// <summary>Solid: it blocks from both sides.</summary>
-    Closed = 0,
-
-    /// <summary>Ethereal: it blocks nothing; a move through it records the touch.</summary>
-    Open,
-
-    /// <summary>Told to close, not yet solid: Ethereal until the first <see cref="Movers.Commit"/> at which nothing overlaps it (until that commit even with nothing in it).</summary>
-    Closing,
-}
-
 /// <summary>
 /// The things that move: creatures, players, doors, registered at run time with an id, a shape, a position and an
 /// orientation (world frame, metres), the cell they are in and their state. Every <c>Resolve</c> meets the movers of the
@@ -33,7 +20,7 @@ public enum DoorState : byte
 /// </para>
 /// <para>With no movers committed, every answer is the engine's without them, bit for bit, and costs one null check.</para>
 /// </remarks>
-public sealed class Movers
+public sealed class MoverRegistry
 {
     private readonly WorldFrame _frame;
     private readonly object _write = new();
@@ -45,7 +32,7 @@ public sealed class Movers
     private long _version;
     private MoverFrame? _current;
 
-    internal Movers(WorldFrame frame) => _frame = frame;
+    internal MoverRegistry(WorldFrame frame) => _frame = frame;
 
     /// <summary>How many movers are registered (committed or not).</summary>
     public int Count
