@@ -10,7 +10,7 @@ namespace AcDream.Core.Tests.Moving;
 /// doors: every answer (with what it touched and its report) equals a single-threaded replay on one whole committed
 /// state within the call's window; no exception; 0 B allocated by the resolver threads' calls.
 /// </summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 public class MoverConcurrencyTests(ITestOutputHelper output)
 {
     private const uint Landblock = 0x7A3BFFFF, East = 0x7B3BFFFF;

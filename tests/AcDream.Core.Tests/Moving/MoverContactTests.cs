@@ -10,7 +10,7 @@ namespace AcDream.Core.Tests.Moving;
 /// engine), at speeds up to 50 m/s, with the creature moving between calls; the door blocks from both sides when closed,
 /// passes when open, holds while occupied and blocks again after; movers across a seam and in a cell.
 /// </summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 public class MoverContactTests(ITestOutputHelper output)
 {
     private const uint Landblock = MoverSmokeTests.Landblock, Outdoor = MoverSmokeTests.Outdoor;

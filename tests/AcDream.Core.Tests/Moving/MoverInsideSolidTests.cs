@@ -11,7 +11,7 @@ namespace AcDream.Core.Tests.Moving;
 /// cylinder it was put in): its penetration depth, measured here in double precision independently of the engine (the
 /// shortest push that frees the disc), never grows; and a door does not close on a creature wholly inside its slab.
 /// </summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 public class MoverInsideSolidTests(ITestOutputHelper output)
 {
     private const uint Landblock = MoverSmokeTests.Landblock;

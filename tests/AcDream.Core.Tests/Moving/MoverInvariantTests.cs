@@ -11,7 +11,7 @@ namespace AcDream.Core.Tests.Moving;
 /// ground's, keeps the body out of every creature (double precision), and where a double-precision sweep says the body
 /// could not have touched a mover, equals the answer of the same engine without movers, bit for bit.
 /// </summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 public class MoverInvariantTests(ITestOutputHelper output)
 {
     [Theory]

@@ -9,7 +9,7 @@ namespace AcDream.Core.Tests.Moving;
 /// the mover's and the target's kind and bits; the answer is stopped exactly when the rules say the target blocks, and
 /// the target is named as touched exactly when it is met.
 /// </summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 [Trait("Mutation", "WallSet")]
 [Trait("Mutation", "BodySweep")]
 public class MoverRuleTests(ITestOutputHelper output)

@@ -5,7 +5,7 @@ using Xunit.Abstractions;
 namespace AcDream.Core.Tests.Moving;
 
 /// <summary>A creature (a cylinder of the game's human size) on open ground: a wall to a body and a point, its rules.</summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 [Trait("Mutation", "WallSet")]
 [Trait("Mutation", "BodySweep")]
 public class MoverSmokeTests(ITestOutputHelper output)

@@ -7,7 +7,7 @@ namespace AcDream.Core.Tests.Moving;
 /// With no movers committed every answer is the engine's without movers, bit for bit; and so it is with movers
 /// committed where no move can meet them (the movers' queries run and find nothing), in both world frames.
 /// </summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 public class MoverZeroCostTests
 {
     [Theory]

@@ -9,7 +9,7 @@ namespace AcDream.Core.Tests.Regression;
 /// told to close reads <see cref="DoorState.Closing"/> until the commit that makes it solid, whether or not anything is in
 /// it; <see cref="Movers.GetDoorState"/> answers the changes made so far, while moves meet the state last committed.
 /// </summary>
-[Trait("Mutation", "Movers")]
+[Trait("Mutation", "MoverRegistry")]
 public class DoorStateDocTests
 {
     private const uint Lb = 0x1010FFFFu;
