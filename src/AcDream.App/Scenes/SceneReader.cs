@@ -1,8 +1,6 @@
-using System.Globalization;
 using System.Numerics;
 using System.Reflection;
 using System.Text.Json;
-using AcDream.App.Movement;
 using AcDream.App.World;
 using AcDream.Core.Physics;
 

@@ -2,7 +2,6 @@ using System.Globalization;
 using System.Numerics;
 using System.Text;
 using AcDream.Core.Physics;
-using AcDream.App.Movement;
 using AcDream.App.World;
 
 namespace AcDream.App.Scenes;

@@ -1,8 +1,5 @@
-using System.Globalization;
 using System.Numerics;
-using System.Text;
 using System.Xml.Linq;
-using AcDream.App.Movement;
 using AcDream.App.World;
 using AcDream.Core.Dat;
 using AcDream.Core.Physics;

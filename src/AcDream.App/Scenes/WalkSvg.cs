@@ -1,6 +1,5 @@
 using System.Globalization;
 using System.Numerics;
-using System.Text;
 using System.Xml.Linq;
 using AcDream.App.Movement;
 using AcDream.App.World;
