@@ -70,13 +70,13 @@ public class PlayerMovementModeTests
         var runner = new PlayerMovementMode(engine, new Vector3(20f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
         var walker = new PlayerMovementMode(engine, new Vector3(20f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
         int refused = 0;
-        MovementFrame last = default;
+        CharacterStep last = default;
 
         for (int i = 0; i < 90; i++)
         {
             last = runner.Update(new MovementIntent(1f, 0f, 0f, true), Frame);
             refused += last.RefusedSteps;
-            MovementFrame walked = walker.Update(new MovementIntent(1f, 0f, 0f, false), Frame);
+            CharacterStep walked = walker.Update(new MovementIntent(1f, 0f, 0f, false), Frame);
             walked.RefusedSteps.Should().Be(0, $"frame {i}: walking climbs");
             walked.LastRefusal.Should().BeNull($"frame {i}: nothing refused");
         }
@@ -100,7 +100,7 @@ public class PlayerMovementModeTests
         var whole = new PlayerMovementMode(engine, new Vector3(23f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
         var split = new PlayerMovementMode(engine, new Vector3(23f, 96f, 0f), 0xA9B40001u, MathF.PI / 2f);
 
-        MovementFrame frame = whole.Update(new MovementIntent(1f, 0f, 0f, false), 1f);
+        CharacterStep frame = whole.Update(new MovementIntent(1f, 0f, 0f, false), 1f);
         for (int i = 0; i < 10; i++)
         {
             split.Update(new MovementIntent(1f, 0f, 0f, false), 0.1f);
@@ -128,7 +128,7 @@ public class PlayerMovementModeTests
         var walk = new MovementIntent(1f, 0f, 0f, false);
 
         int refused = 0;
-        MovementFrame last = default;
+        CharacterStep last = default;
         for (int i = 0; i < 30; i++)
         {
             last = mode.Update(walk, Frame);
@@ -159,7 +159,7 @@ public class PlayerMovementModeTests
         // x = 142.1 in 0x0143 is a floor edge, whose refusal names no surface.
         var mode = new PlayerMovementMode(HoltburgEngine(), new Vector3(139f, 10f, 94f), 0xA9B40143u, MathF.PI / 2f, MovementOptions.Player with { Body = null });
 
-        MovementFrame last = default;
+        CharacterStep last = default;
         int refused = 0;
         for (int i = 0; i < 90; i++)
         {
@@ -184,7 +184,7 @@ public class PlayerMovementModeTests
         var walk = new MovementIntent(1f, 0f, 0f, false);
 
         int slid = 0;
-        MovementFrame last = default;
+        CharacterStep last = default;
         for (int i = 0; i < 60; i++)
         {
             last = mode.Update(walk, Frame);
@@ -221,7 +221,7 @@ public class PlayerMovementModeTests
         corner.Y.Should().BeApproximately(13.1f - MoverBody.Player.Radius, 1e-3f, $"at {corner}");
         for (int i = 0; i < 30; i++)
         {
-            MovementFrame frame = mode.Update(walk, Frame);
+            CharacterStep frame = mode.Update(walk, Frame);
             frame.RefusedSteps.Should().Be(1, $"frame {i}: {frame}");
             frame.LastRefusal.Should().Be(ResolveOutcome.Wall, $"frame {i}: the engine stops the body at once in the corner; {frame}");
             frame.SlidSteps.Should().Be(0, $"frame {i}: {frame}");
@@ -251,7 +251,7 @@ public class PlayerMovementModeTests
         while (!mode.IsOnGround)
         {
             airborne.Should().BeLessThan(200, "the mover must land");
-            expectedSpeed = MathF.Max(expectedSpeed + (PlayerMovementMode.Gravity * Frame), -PlayerMovementMode.MaxFallSpeed);
+            expectedSpeed = MathF.Max(expectedSpeed + ((-new CharacterSettings().Gravity) * Frame), -new CharacterSettings().MaxFallSpeed);
             expectedZ += expectedSpeed * Frame;
             mode.Update(Idle, Frame);
             airborne++;
@@ -285,11 +285,11 @@ public class PlayerMovementModeTests
         for (int i = 0; i < 300; i++)
         {
             mode.Update(Idle, Frame);
-            mode.VerticalSpeed.Should().BeGreaterThanOrEqualTo(-PlayerMovementMode.MaxFallSpeed, $"frame {i}");
+            mode.VerticalSpeed.Should().BeGreaterThanOrEqualTo(-new CharacterSettings().MaxFallSpeed, $"frame {i}");
         }
 
         mode.IsOnGround.Should().BeFalse();
-        mode.VerticalSpeed.Should().Be(-PlayerMovementMode.MaxFallSpeed, "after 10 s the unclamped speed would be 98 m/s");
+        mode.VerticalSpeed.Should().Be(-new CharacterSettings().MaxFallSpeed, "after 10 s the unclamped speed would be 98 m/s");
     }
 
     [Theory]
@@ -338,15 +338,15 @@ public class PlayerMovementModeTests
         var walk = new MovementIntent(1f, 0f, 0f, false);
 
         // On a worker thread with a time limit: a regression fails here instead of hanging the suite.
-        Task<MovementFrame> update = Task.Factory.StartNew(() => mode.Update(walk, seconds), TaskCreationOptions.LongRunning);
+        Task<CharacterStep> update = Task.Factory.StartNew(() => mode.Update(walk, seconds), TaskCreationOptions.LongRunning);
         (await Task.WhenAny(update, Task.Delay(TimeSpan.FromSeconds(10)))).Should().BeSameAs(update, $"Update(walk, {seconds}) must return; still running after 10 s");
 
-        MovementFrame frame = await update;
-        MovementFrame reference = capped.Update(walk, PlayerMovementMode.MaxFrameSeconds);
-        frame.Steps.Should().Be(10, $"a {seconds} s frame is clamped to {PlayerMovementMode.MaxFrameSeconds} s, 10 steps of 0.1 s");
+        CharacterStep frame = await update;
+        CharacterStep reference = capped.Update(walk, new CharacterSettings().MaxFrameSeconds);
+        frame.Steps.Should().Be(10, $"a {seconds} s frame is clamped to {new CharacterSettings().MaxFrameSeconds} s, 10 steps of 0.1 s");
         frame.Should().Be(reference, "the clamped frame is exactly a MaxFrameSeconds frame");
-        mode.Position.Should().Be(capped.Position, $"moved as far as in {PlayerMovementMode.MaxFrameSeconds} s");
-        mode.Position.Y.Should().BeApproximately(96f + (PlayerMovementMode.WalkSpeed * PlayerMovementMode.MaxFrameSeconds), 1e-3f, $"at {mode.Position}");
+        mode.Position.Should().Be(capped.Position, $"moved as far as in {new CharacterSettings().MaxFrameSeconds} s");
+        mode.Position.Y.Should().BeApproximately(96f + (PlayerMovementMode.WalkSpeed * new CharacterSettings().MaxFrameSeconds), 1e-3f, $"at {mode.Position}");
     }
 
     [Theory]
@@ -495,11 +495,11 @@ public class PlayerMovementModeTests
         mode.Jump().Should().BeFalse("not again in the air");
         float top = 50f;
         int frames = 0;
-        MovementFrame first = default;
+        CharacterStep first = default;
         int landings = 0;
         do
         {
-            MovementFrame f = mode.Update(Idle, Frame);
+            CharacterStep f = mode.Update(Idle, Frame);
             first = frames == 0 ? f : first;
             landings += f.Landings;
             top = MathF.Max(top, mode.Position.Z);
@@ -526,7 +526,7 @@ public class PlayerMovementModeTests
         while (!mode.IsOnGround && frames++ < 100)
         {
             float before = mode.VerticalSpeed;
-            MovementFrame f = mode.Update(Idle, Frame);
+            CharacterStep f = mode.Update(Idle, Frame);
             headHits += f.HeadHits;
             if (f.HeadHits > 0)
             {

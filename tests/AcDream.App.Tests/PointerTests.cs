@@ -122,7 +122,7 @@ public sealed class PointerTests(DefaultWalk walk) : IClassFixture<DefaultWalk>
         (sky.Hit, sky.Kind, sky.Id).Should().Be((false, SurfaceKind.None, 0u), $"{sky}");
         sky.Distance.Should().Be(Pointer.MaxLength);
         sky.Point.Should().Be(eye + new Vector3(0f, 0f, Pointer.MaxLength));
-        pointer.Options.Should().Be(new CastOptions(0f, CastFilter.None, SceneRunner.PlayerId));
+        (pointer.Options, pointer.PlayerId).Should().Be((new CastOptions(0f, CastFilter.None), SceneRunner.PlayerId));
         FluentActions.Invoking(() => pointer.Cast(eye, 0u, Vector3.Zero)).Should().Throw<ArgumentException>().WithMessage("*direction*");
         FluentActions.Invoking(() => pointer.Cast(eye, 0u, new Vector3(float.NaN, 0f, 0f))).Should().Throw<ArgumentException>().WithMessage("*direction*");
     }

@@ -66,7 +66,7 @@ public class StairRunTests(ITestOutputHelper output)
     public void The_player_runs_down_into_the_cellar_and_back_up_at_any_speed(string cellar, float lane, float speed, bool global)
     {
         PhysicsEngine engine = Engine(global);
-        foreach (float frame in speed > PlayerMovementMode.RunSpeed ? [1f / 30f] : new[] { 1f / 30f, PlayerMovementMode.MaxStepSeconds })
+        foreach (float frame in speed > PlayerMovementMode.RunSpeed ? [1f / 30f] : new[] { 1f / 30f, new CharacterSettings().MaxStepSeconds })
         {
             for (int phase = 0; phase < 6; phase++)
             {
@@ -108,7 +108,7 @@ public class StairRunTests(ITestOutputHelper output)
             var last = new List<string>();
             while (!leg.Done(engine.ToLandblockLocal(Holtburg, mode.Position)))
             {
-                MovementFrame f = mode.Update(new MovementIntent(1f, 0f, 0f, Run: speed != PlayerMovementMode.WalkSpeed), frame);
+                CharacterStep f = mode.Update(new MovementIntent(1f, 0f, 0f, Run: speed != PlayerMovementMode.WalkSpeed), frame);
                 Vector3 local = engine.ToLandblockLocal(Holtburg, mode.Position);
                 last.Add($"frame {legFrames}: ({local.X:F4}, {local.Y:F4}, {local.Z:F4}) 0x{mode.CellId:X8} ground {mode.IsOnGround} {f}");
                 if (last.Count > 12)

@@ -31,7 +31,7 @@ public sealed class TouchOrderTests
         engine.Movers.Commit();
         var mode = new PlayerMovementMode(engine, start, Cell, 0f, MovementOptions.Player) { MoverId = 1u };
 
-        MovementFrame frame = mode.Update(new MovementIntent(1f, 0f, 0f, true), PlayerMovementMode.MaxStepSeconds); // one step, 0.4 m north
+        CharacterStep frame = mode.Update(new MovementIntent(1f, 0f, 0f, true), new CharacterSettings().MaxStepSeconds); // one step, 0.4 m north
 
         frame.Steps.Should().Be(1);
         mode.Position.Y.Should().BeApproximately(96.4f, 1e-4f, "Ethereal creatures do not stop it");

@@ -102,6 +102,7 @@ public sealed class ChaseCamera
     private readonly PhysicsEngine _engine;
     private readonly CastOptions _sphere;
     private readonly CastOptions _ray;
+    private readonly uint _playerId;
 
     // The last frame's pivot and its cell, which the next frame's pivot is followed from.
     private Vector3 _lastPivot;
@@ -115,12 +116,16 @@ public sealed class ChaseCamera
     {
         ArgumentNullException.ThrowIfNull(engine);
         _engine = engine;
-        _sphere = new CastOptions(ViewerRadius, CastFilter.IgnoreCreatures | CastFilter.SolidOnly, playerId);
+        _sphere = new CastOptions(ViewerRadius, CastFilter.IgnoreCreatures | CastFilter.SolidOnly);
         _ray = _sphere with { Radius = 0f };
+        _playerId = playerId;
     }
 
-    /// <summary>The casts' options: the viewer sphere, passing creatures, players, open doors and the player's own id.</summary>
+    /// <summary>The casts' options: the viewer sphere, passing creatures, players and open doors (and the player's own id, <see cref="PlayerId"/>).</summary>
     public CastOptions Options => _sphere;
+
+    /// <summary>The player's mover id, which every cast of the camera passes (0: none).</summary>
+    public uint PlayerId => _playerId;
 
     /// <summary>Places the eye for a player standing at <paramref name="feet"/> in <paramref name="cellId"/>, facing <paramref name="heading"/>.</summary>
     /// <param name="feet">The player's feet, world metres.</param>
@@ -135,7 +140,7 @@ public sealed class ChaseCamera
         (float sin, float cos) = MathF.SinCos(heading);
         var offset = new Vector3(-sin * BoomBack, -cos * BoomBack, BoomUp);
         Vector3 wanted = pivot + offset;
-        CastHit boom = _engine.Cast(pivot, pivotCell, wanted, in _sphere);
+        CastHit boom = Cast(pivot, pivotCell, wanted, in _sphere);
         if (!boom.Hit)
         {
             return new CameraView(pivot, pivotCell, wanted, boom.CellId, BoomLength, false, SurfaceKind.None, 0, wanted, false, false);
@@ -146,7 +151,7 @@ public sealed class ChaseCamera
         if (reach >= MinBoom)
         {
             Vector3 eye = pivot + (along * reach);
-            uint eyeCell = _engine.Cast(pivot, pivotCell, eye, in _ray).CellId; // (a ray: the eye's cell, the sphere having stopped short of it)
+            uint eyeCell = Cast(pivot, pivotCell, eye, in _ray).CellId; // (a ray: the eye's cell, the sphere having stopped short of it)
             return new CameraView(pivot, pivotCell, eye, eyeCell, reach, true, boom.Kind, boom.Id, boom.Position, false, false);
         }
 
@@ -157,7 +162,7 @@ public sealed class ChaseCamera
 
         // Boxed in: the shortest boom, along its line, whatever it overlaps; its cell as a ray reaches it.
         Vector3 shortest = pivot + (along * MinBoom);
-        uint shortestCell = _engine.Cast(pivot, pivotCell, shortest, in _ray).CellId;
+        uint shortestCell = Cast(pivot, pivotCell, shortest, in _ray).CellId;
         return new CameraView(pivot, pivotCell, shortest, shortestCell, MinBoom, true, boom.Kind, boom.Id, boom.Position, false, true);
     }
 
@@ -173,7 +178,7 @@ public sealed class ChaseCamera
         Vector3 top = feet + new Vector3(0f, 0f, PivotHeight);
         if (_following && Vector3.DistanceSquared(_lastPivot, top) <= MaxFollow * MaxFollow)
         {
-            CastHit follow = _engine.Cast(_lastPivot, _lastPivotCell, top, in _ray);
+            CastHit follow = Cast(_lastPivot, _lastPivotCell, top, in _ray);
             if (!follow.Hit)
             {
                 return (top, follow.CellId);
@@ -181,14 +186,14 @@ public sealed class ChaseCamera
         }
 
         Vector3 foot = feet + new Vector3(0f, 0f, FootLift);
-        CastHit up = _engine.Cast(foot, cellId, top, in _ray);
+        CastHit up = Cast(foot, cellId, top, in _ray);
         if (!up.Hit)
         {
             return (top, up.CellId);
         }
 
         Vector3 pivot = foot + new Vector3(0f, 0f, MathF.Max(0f, (up.Fraction * (PivotHeight - FootLift)) - Skin));
-        return (pivot, pivot == foot ? cellId : _engine.Cast(foot, cellId, pivot, in _ray).CellId);
+        return (pivot, pivot == foot ? cellId : Cast(foot, cellId, pivot, in _ray).CellId);
     }
 
     /// <summary>
@@ -230,7 +235,7 @@ public sealed class ChaseCamera
             float c = fromPivot.LengthSquared() - (MinBoom * MinBoom);
             float t = c >= 0f ? 0f : -b + MathF.Sqrt((b * b) - c); // from inside that sphere, the one way out along the way
             Vector3 target = start + (direction * t);
-            CastHit hit = _engine.Cast(at, atCell, target, in _sphere);
+            CastHit hit = Cast(at, atCell, target, in _sphere);
             if (!hit.Hit)
             {
                 eye = target;
@@ -260,4 +265,8 @@ public sealed class ChaseCamera
         eyeCell = 0;
         return false;
     }
+
+    /// <summary>One cast of the camera from <paramref name="from"/> to <paramref name="to"/>, passing the player.</summary>
+    private CastHit Cast(Vector3 from, uint fromCellId, Vector3 to, in CastOptions options) =>
+        _engine.Cast(new CastRequest(from, fromCellId, to - from) { Options = options, MoverId = _playerId });
 }

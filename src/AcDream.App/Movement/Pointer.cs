@@ -29,10 +29,13 @@ public sealed class Pointer(PhysicsEngine engine, uint playerId = 0)
     private const float MinSquaredLength = 1e-30f;
 
     private readonly PhysicsEngine _engine = engine ?? throw new ArgumentNullException(nameof(engine));
-    private readonly CastOptions _options = new(0f, CastFilter.None, playerId);
+    private readonly CastOptions _options = new(0f, CastFilter.None);
 
-    /// <summary>The ray's options: radius 0, no filter, the player's id passed.</summary>
+    /// <summary>The ray's options: radius 0, no filter (the player's id, <see cref="PlayerId"/>, is passed).</summary>
     public CastOptions Options => _options;
+
+    /// <summary>The player's mover id, which the ray passes (0: none).</summary>
+    public uint PlayerId => playerId;
 
     /// <summary>The first thing under the ray from <paramref name="eye"/> along <paramref name="direction"/>.</summary>
     /// <param name="eye">Where the ray starts, world metres.</param>
@@ -51,8 +54,7 @@ public sealed class Pointer(PhysicsEngine engine, uint playerId = 0)
         // 1e-15) is measured once scaled so its largest component is 1; any other is measured as it is.
         float squared = direction.LengthSquared();
         Vector3 along = squared is >= MinSquaredLength and <= float.MaxValue ? direction : direction / largest;
-        Vector3 end = eye + (along * (MaxLength / along.Length()));
-        CastHit hit = _engine.Cast(eye, eyeCellId, end, in _options);
+        CastHit hit = _engine.Cast(new CastRequest(eye, eyeCellId, along * (MaxLength / along.Length())) { Options = _options, MoverId = playerId });
         return new PointerHit(hit.Hit, hit.Point, hit.Fraction * MaxLength, hit.Normal, hit.Kind, hit.Id, hit.CellId);
     }
 }

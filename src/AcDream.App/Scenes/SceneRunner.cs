@@ -153,7 +153,7 @@ internal static class SceneRunner
                 window.CommitMovers();
                 RecordDoors();
                 FrameSample before = samples[^1];
-                MovementFrame moved = mode.Update(intent, dt);
+                CharacterStep moved = mode.Update(intent, dt);
                 foreach (uint id in mode.Touched)
                 {
                     touches.Add(new MoverTouch(frame, id, moved.Met.Wall.Kind == SurfaceKind.Mover && moved.Met.Wall.Id == id));
@@ -336,14 +336,14 @@ internal static class SceneRunner
     }
 
     /// <summary>The object whose floor the mover stands on after the frame, as the engine reported it, or 0.</summary>
-    private static uint FloorObject(PlayerMovementMode mode, MovementFrame moved) =>
+    private static uint FloorObject(PlayerMovementMode mode, CharacterStep moved) =>
         mode.IsOnGround && moved.Met.Floor.Kind == SurfaceKind.ObjectFloor ? moved.Met.Floor.Id : 0;
 
     /// <summary>
     /// For a frame the engine answered Wall, OuterWall or Slid along a wall: the object whose wall, shell or
     /// cylinder it reported meeting (0 when it was a cell's wall).
     /// </summary>
-    private static uint WallObject(MovementFrame moved, Vector3? slide)
+    private static uint WallObject(CharacterStep moved, Vector3? slide)
     {
         bool wall = moved.LastRefusal is ResolveOutcome.Wall or ResolveOutcome.OuterWall || slide is Vector3 { Z: 0f };
         return wall && moved.Met.Wall.Kind is SurfaceKind.ObjectWall or SurfaceKind.BuildingShell or SurfaceKind.Cylinder ? moved.Met.Wall.Id : 0;

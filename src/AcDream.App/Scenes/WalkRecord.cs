@@ -14,7 +14,7 @@ namespace AcDream.App.Scenes;
 /// <param name="WallObjectId">For a frame refused as Wall or OuterWall or slid along a wall: the object whose wall, shell or cylinder the engine reported it met (<see cref="MoveReport.Wall"/>); 0 otherwise or when it was a cell's wall.</param>
 /// <param name="Moved">What the frame's movement did as the engine reported it (jumps, head hits, landings, edge slides among it).</param>
 /// <param name="Camera">Where the chase camera (<see cref="Movement.ChaseCamera"/>) put its eye after the frame's move.</param>
-internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null, uint FloorObjectId = 0, uint WallObjectId = 0, Movement.MovementFrame Moved = default,
+internal readonly record struct FrameSample(int Frame, Vector3 Position, uint CellId, bool IsOnGround, ResolveOutcome? Refusal, Vector3? Slide = null, uint FloorObjectId = 0, uint WallObjectId = 0, AcDream.Core.Physics.CharacterStep Moved = default,
     Movement.CameraView Camera = default);
 
 /// <summary>How a leg ended.</summary>
@@ -26,7 +26,7 @@ internal readonly record struct FrameSample(int Frame, Vector3 Position, uint Ce
 /// <param name="Slides">The frames during the leg with a move the engine answered <see cref="ResolveOutcome.Slid"/>: the surface's normal the engine reported, one per such frame, in frame order.</param>
 internal sealed record LegResult(SceneLeg Leg, int FirstFrame, int LastFrame, bool Reached, IReadOnlyDictionary<ResolveOutcome, int> Refusals, IReadOnlyList<Vector3> Slides)
 {
-    /// <summary>The leg's frames' jumps, head hits, landings and edge slides (<see cref="Movement.MovementFrame"/>).</summary>
+    /// <summary>The leg's frames' jumps, head hits, landings and edge slides (<see cref="AcDream.Core.Physics.CharacterStep"/>).</summary>
     public (int Jumps, int HeadHits, int Landings, int EdgeSlides) Air { get; init; }
 }
 

@@ -4,7 +4,7 @@ namespace AcDream.Core.Physics;
 
 /// <summary>
 /// What one <c>Resolve</c> met: the floor its answer stands on and the wall that stopped or slid it.
-/// Filled by <see cref="PhysicsEngine.Resolve(Vector3, uint, Vector3, float, in MovementOptions, out MoveReport)"/>.
+/// Filled by <see cref="PhysicsEngine.Resolve(in MoveRequest, Span{uint})"/> when <see cref="MoveRequest.WithReport"/> asks.
 /// </summary>
 /// <param name="Floor">
 /// The ground under the answer when <see cref="ResolveResult.IsOnGround"/> is true: the terrain, the cell's

@@ -8,7 +8,7 @@ namespace AcDream.Core.Physics;
 public sealed partial class PhysicsEngine
 {
     /// <summary>
-    /// Sweeps a sphere (a ray with radius 0) from <paramref name="from"/> to <paramref name="to"/> and returns its first
+    /// Sweeps a sphere (a ray with radius 0) from <see cref="CastRequest.From"/> along <see cref="CastRequest.Delta"/> and returns its first
     /// contact: terrain, a cell's wall, floor or ceiling, an object (wall, shell, floor or cylinder) or a mover, and the
     /// cell its centre is in there, found by following portals between cells and seams between landblocks.
     /// </summary>
@@ -24,14 +24,14 @@ public sealed partial class PhysicsEngine
     /// cell's floor; an object's polygons are met at their vertices placed in double precision, up to 7.6e-6 m from the
     /// float plane a mover's answer stands on, so start a cast a little above feet on an object's floor). A cylinder
     /// decides by its nearest point. A cast of zero
-    /// length meets nothing. Unlike <c>Resolve</c>, it takes the end point, not a delta.
+    /// length meets nothing. As <c>Resolve</c>, it takes a delta: the end is <c>From + Delta</c>, rounded to floats.
     /// </para>
     /// <para>
     /// Outdoors the sphere meets the terrain, outdoor objects (buildings by their shells) and the walls of buildings'
     /// cells; its centre passing in through a doorway goes on in that cell. In a cell it meets the cell's and its
     /// portal neighbours' polygons and objects (and, near a door, what stands outside the door); its centre passing out
     /// through a portal goes on beyond it. A start exactly on a surface moving off it (a ray up from the feet) is free of it. The movers committed last (<see cref="Movers"/>) are met by their walls, as
-    /// <paramref name="options"/> filters them; a mover in a landblock that is neither the start's nor next to it is not. Of
+    /// <see cref="CastRequest.Options"/> filters them (and <see cref="CastRequest.MoverId"/> passes); a mover in a landblock that is neither the start's nor next to it is not. Of
     /// the movers it looks only at those filed near each stretch of its path.
     /// The cast reads each landblock of the 3 × 3 around its start once (one farther away, afresh each time), allocates
     /// nothing (after a thread's first cast with movers near, which makes the thread's record of them), and never
@@ -40,25 +40,25 @@ public sealed partial class PhysicsEngine
     /// <para>
     /// A cast from a landblock that is not loaded returns a contact at fraction 0 with kind <see cref="SurfaceKind.None"/>;
     /// one whose path reaches land not loaded (or the world's edge) stops there the same way. A cast that meets nothing
-    /// returns <paramref name="to"/> with fraction 1. It enters at most <see cref="PhysicsConstants.MaxCellVisits"/>
+    /// returns the end with fraction 1. It enters at most <see cref="PhysicsConstants.MaxCellVisits"/>
     /// pieces (a cell, or a walk outdoors); one that would need more ends where its last piece began, the same way.
     /// </para>
     /// </remarks>
-    /// <param name="from">The sphere's centre at the start, world metres.</param>
-    /// <param name="fromCellId">The cell that holds <paramref name="from"/> (<c>0xXXYYCCCC</c>; an outdoor number, 0 included, is recomputed from the position). Not always the cell <c>Resolve</c> names for a mover whose start is above its feet: a body in the air over a floor opening is in the cell below, a pivot over its head may be in the cell above; cast from the feet to such a point first to find its cell.</param>
-    /// <param name="to">The centre's end, world metres.</param>
-    /// <param name="options">The radius (metres, 0 to <see cref="PhysicsConstants.MaxCastRadius"/>) and filters.</param>
-    /// <exception cref="ArgumentOutOfRangeException">The radius is more than <see cref="PhysicsConstants.MaxCastRadius"/> (named <c>options</c>).</exception>
-    /// <exception cref="ArgumentException">A position is not finite, the radius is negative or not finite, the cell id is not a cell of the world, or an indoor cell is not in its loaded landblock.</exception>
-    public CastHit Cast(Vector3 from, uint fromCellId, Vector3 to, in CastOptions options)
+    /// <param name="request">Where it starts (world metres), its cell (<c>0xXXYYCCCC</c>; an outdoor number, 0 included, is recomputed from the position), the centre's displacement, the radius (metres, 0 to <see cref="PhysicsConstants.MaxCastRadius"/>), filters and the mover it ignores. The start's cell is not always the cell <c>Resolve</c> names for a mover whose start is above its feet: a body in the air over a floor opening is in the cell below, a pivot over its head may be in the cell above; find it with <see cref="FindCell"/>.</param>
+    /// <exception cref="ArgumentOutOfRangeException">The radius is more than <see cref="PhysicsConstants.MaxCastRadius"/> (named <c>request</c>).</exception>
+    /// <exception cref="ArgumentException">A position or the delta is not finite (or the end overflows), the radius is negative or not finite, the cell id is not a cell of the world, or an indoor cell is not in its loaded landblock; each named <c>request</c>, with the field.</exception>
+    public CastHit Cast(in CastRequest request)
     {
+        Vector3 from = request.From, to = from + request.Delta;
+        uint fromCellId = request.FromCellId;
+        CastOptions options = request.Options;
         if (!(Geometry.IsFinite(from) && Geometry.IsFinite(to) && options.Radius >= 0f && options.Radius <= PhysicsConstants.MaxCastRadius && MoveQuery.IsCellOfTheWorld(fromCellId)))
         {
-            ThrowInvalidCast(from, fromCellId, to, options.Radius);
+            ThrowInvalidCast(in request);
         }
 
         var lands = new Neighbourhood(_registry);
-        if (!Locator.TryFind(_frame, ref lands, from, fromCellId, out Place start, nameof(fromCellId)))
+        if (!Locator.TryFind(_frame, ref lands, from, fromCellId, out Place start, nameof(request)))
         {
             // The land under the start is not loaded: stopped where it is, in its cell (an outdoor one found from the position).
             Vector3 back = from == to ? Vector3.Zero : Vector3.Normalize(from - to);
@@ -69,7 +69,7 @@ public sealed partial class PhysicsEngine
 
         Vector3 move = to - from;
         float reach = MathF.Abs(move.X) + MathF.Abs(move.Y) + options.Radius + PhysicsConstants.TouchReach;
-        if (_movers.Any && lands.MeetAlong(_movers, in _frame, from, fromCellId, reach, options.IgnoreId))
+        if (_movers.Any && lands.MeetAlong(_movers, in _frame, from, fromCellId, reach, request.MoverId))
         {
             return HeldCast(ref lands, in start, from, to, in options);
         }
@@ -93,28 +93,35 @@ public sealed partial class PhysicsEngine
 
     [DoesNotReturn]
     [MethodImpl(MethodImplOptions.NoInlining)]
-    private static void ThrowInvalidCast(Vector3 from, uint cellId, Vector3 to, float radius)
+    private static void ThrowInvalidCast(in CastRequest request)
     {
-        if (!Geometry.IsFinite(from))
+        float radius = request.Options.Radius;
+        uint cellId = request.FromCellId;
+        if (!Geometry.IsFinite(request.From))
         {
-            throw new ArgumentException($"from {from} must be finite.", nameof(from));
+            throw new ArgumentException($"request.From {request.From} must be finite (cell 0x{cellId:X8}).", nameof(request));
         }
 
-        if (!Geometry.IsFinite(to))
+        if (!Geometry.IsFinite(request.Delta))
         {
-            throw new ArgumentException($"to {to} must be finite.", nameof(to));
+            throw new ArgumentException($"request.Delta {request.Delta} must be finite (cell 0x{cellId:X8}).", nameof(request));
+        }
+
+        if (!Geometry.IsFinite(request.From + request.Delta))
+        {
+            throw new ArgumentException($"request.From {request.From} + request.Delta {request.Delta} overflows a float (cell 0x{cellId:X8}).", nameof(request));
         }
 
         if (!(float.IsFinite(radius) && radius >= 0f))
         {
-            throw new ArgumentException($"options.Radius {radius} must be finite and at least 0 metres.", "options");
+            throw new ArgumentException($"request.Options.Radius {radius} must be finite and at least 0 metres (cell 0x{cellId:X8}).", nameof(request));
         }
 
         if (radius > PhysicsConstants.MaxCastRadius)
         {
-            throw new ArgumentOutOfRangeException("options", radius, $"options.Radius {radius} is more than the largest cast radius, {PhysicsConstants.MaxCastRadius} metres (PhysicsConstants.MaxCastRadius).");
+            throw new ArgumentOutOfRangeException(nameof(request), radius, $"request.Options.Radius {radius} (cell 0x{cellId:X8}) is more than the largest cast radius, {PhysicsConstants.MaxCastRadius} metres (PhysicsConstants.MaxCastRadius).");
         }
 
-        throw new ArgumentException($"fromCellId 0x{cellId:X8} is not a cell of the world (0x0000..0x0040 outdoors, 0x0100..0xFFFD indoors, landblock X and Y below 0xFF).", "fromCellId");
+        throw new ArgumentException($"request.FromCellId 0x{cellId:X8} is not a cell of the world (0x0000..0x0040 outdoors, 0x0100..0xFFFD indoors, landblock X and Y below 0xFF).", nameof(request));
     }
 }

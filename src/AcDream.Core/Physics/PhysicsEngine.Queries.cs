@@ -84,4 +84,35 @@ public sealed partial class PhysicsEngine
         objectId = floor.Kind == SurfaceKind.ObjectFloor ? floor.Id : 0u;
         return true;
     }
+
+    /// <summary>
+    /// Which cell holds <paramref name="position"/>: searched through portals from <paramref name="hintCellId"/> (the cell of
+    /// a point near it: the player's for the camera's eye), else the outdoor cell under it.
+    /// </summary>
+    /// <remarks>
+    /// An indoor cell holds a point when one of its floors lies under the point's XY at or below it (within
+    /// <see cref="PhysicsConstants.GroundTolerance"/>) and the point is not above the cell's walls; of the cells that do,
+    /// reached through portals from the hint (from an outdoor hint: from the cells with a door to the outdoors in the
+    /// point's landblock), at most <see cref="PhysicsConstants.MaxCellVisits"/> of them, the one whose floor is highest. A
+    /// point over land not loaded is in the outdoor cell its position names. Allocates nothing.
+    /// </remarks>
+    /// <param name="position">The point, world metres.</param>
+    /// <param name="hintCellId">A cell near the point (<c>0xXXYYCCCC</c>; any outdoor number, 0 included, for outdoors).</param>
+    /// <returns>The cell's id, <c>0xXXYYCCCC</c>.</returns>
+    /// <exception cref="ArgumentException">The position is not finite, the hint is not a cell of the world, or an indoor hint is not in its loaded landblock.</exception>
+    public uint FindCell(Vector3 position, uint hintCellId)
+    {
+        if (!Geometry.IsFinite(position))
+        {
+            throw new ArgumentException($"position {position} (hint 0x{hintCellId:X8}) must be finite.", nameof(position));
+        }
+
+        if (!MoveQuery.IsCellOfTheWorld(hintCellId))
+        {
+            throw new ArgumentException($"hintCellId 0x{hintCellId:X8} is not a cell of the world (0x0000..0x0040 outdoors, 0x0100..0xFFFD indoors, landblock X and Y below 0xFF).", nameof(hintCellId));
+        }
+
+        var lands = new Neighbourhood(_registry);
+        return CellFinder.Find(in _frame, ref lands, position, hintCellId);
+    }
 }

@@ -7,97 +7,55 @@ namespace AcDream.Core.Physics;
 public sealed partial class PhysicsEngine
 {
     /// <summary>
-    /// <see cref="Resolve(Vector3, uint, Vector3, float, in MovementOptions)"/>, and what the move met: the floor the
-    /// answer stands on and the wall, shell or cylinder that stopped or slid it (see <see cref="MoveReport"/>). The
-    /// answer is bit for bit that of the call without the report; the report costs only the calls that ask for it.
+    /// The general move: <see cref="Resolve(Vector3, uint, Vector3, float, in MovementOptions)"/> as the request says,
+    /// as the mover <see cref="MoveRequest.MoverId"/>, with what the move met when asked and the movers it touched.
     /// </summary>
-    /// <param name="currentPos">Where the mover's feet are, world metres.</param>
-    /// <param name="currentCellId">The cell the mover is in (<c>0xXXYYCCCC</c>).</param>
-    /// <param name="delta">The intended move, world metres; its Z is ignored unless <see cref="MovementOptions.Vertical"/> (with a body) moves the body up and down by it.</param>
-    /// <param name="stepUpHeight">Highest rise one move (one sub-step when sweeping) may climb, metres, ≥ 0.</param>
-    /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
-    /// <param name="report">What the move met.</param>
-    /// <exception cref="ArgumentException">As the four-argument call.</exception>
-    public ResolveResult Resolve(
-        Vector3 currentPos,
-        uint currentCellId,
-        Vector3 delta,
-        float stepUpHeight,
-        in MovementOptions options,
-        out MoveReport report)
+    /// <remarks>
+    /// <para>
+    /// The answer (<see cref="MoveResult.Answer"/>) is bit for bit that of the call with the same options: the report,
+    /// the mover id's skip and the touches change nothing of it. A registered mover's move does not meet its own walls,
+    /// and the rules of who blocks whom read its committed state (see <see cref="MoverState"/>); an id not committed (or
+    /// 0) moves as an unregistered object.
+    /// </para>
+    /// <para>
+    /// Touched movers: every committed mover whose walls the answer's path comes within
+    /// <see cref="PhysicsConstants.TouchReach"/> of (blocking or not: an Ethereal door walked through is touched), each
+    /// once, in the order met along the path from the start to the answer; the first ones, up to the span's length, are
+    /// written into <paramref name="touched"/>, and <see cref="MoveResult.TouchedCount"/> says how many there were. With
+    /// no mover near, 0 and nothing is written.
+    /// </para>
+    /// </remarks>
+    /// <param name="request">The move: position (world metres), cell, delta, step, options, mover id, whether to report.</param>
+    /// <param name="touched">Where to write the ids of the movers touched; empty (the default): touches are not looked for, and the count is 0.</param>
+    /// <exception cref="ArgumentException">As the four-argument call, named <c>request</c> with the field.</exception>
+#pragma warning disable RS0027 // (the spec's four-argument Resolve has no optional parameter to clash with; one general call reads best with the span optional)
+    public MoveResult Resolve(in MoveRequest request, Span<uint> touched = default)
+#pragma warning restore RS0027
     {
-        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
+        MoveQuery.Validate(in request);
+        MovementOptions options = request.Options;
         var lands = new Neighbourhood(_registry);
-        return _movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), 0)
-            ? HeldReported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report)
-            : Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
-    }
-
-    /// <summary>
-    /// <see cref="Resolve(Vector3, uint, Vector3, float, in MovementOptions)"/> for a registered mover: the mover
-    /// <paramref name="moverId"/> is not met by its own move, and the rules of who blocks whom read its committed state
-    /// (see <see cref="MoverState"/>). An id not committed (or 0) moves as an unregistered object: nothing skipped.
-    /// </summary>
-    /// <param name="currentPos">Where the mover's feet are, world metres.</param>
-    /// <param name="currentCellId">The cell the mover is in (<c>0xXXYYCCCC</c>).</param>
-    /// <param name="delta">The intended move, world metres (see the call without the id).</param>
-    /// <param name="stepUpHeight">Highest rise one move (one sub-step when sweeping) may climb, metres, ≥ 0.</param>
-    /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
-    /// <param name="moverId">The id of the mover that moves (<see cref="Movers"/>).</param>
-    /// <exception cref="ArgumentException">As the four-argument call.</exception>
-    public ResolveResult Resolve(
-        Vector3 currentPos,
-        uint currentCellId,
-        Vector3 delta,
-        float stepUpHeight,
-        in MovementOptions options,
-        uint moverId)
-        => Moved(currentPos, currentCellId, delta, stepUpHeight, in options, moverId);
-
-    /// <summary>
-    /// <see cref="Resolve(Vector3, uint, Vector3, float, in MovementOptions, uint)"/>, what the move met
-    /// (<see cref="MoveReport"/>; a mover that stopped it is <see cref="SurfaceKind.Mover"/> with its id), and every
-    /// mover it touched, blocking or not: the movers met (not the mover itself, not one both Ethereal and
-    /// IgnoreCollisions) whose walls the mover's disc (its body's radius, or a point) comes within
-    /// <see cref="PhysicsConstants.TouchReach"/> of along the straight line from its start to the answer, over the height
-    /// from its lower feet to its higher head (a point: its feet to its step up), and the one that stopped it. The answer is bit for bit that of the
-    /// call without them; they cost only the calls that ask.
-    /// </summary>
-    /// <param name="currentPos">Where the mover's feet are, world metres.</param>
-    /// <param name="currentCellId">The cell the mover is in (<c>0xXXYYCCCC</c>).</param>
-    /// <param name="delta">The intended move, world metres (see the call without the id).</param>
-    /// <param name="stepUpHeight">Highest rise one move (one sub-step when sweeping) may climb, metres, ≥ 0.</param>
-    /// <param name="options">The effects to simulate; see <see cref="MovementOptions"/>.</param>
-    /// <param name="moverId">The id of the mover that moves, or 0.</param>
-    /// <param name="touched">Where the ids of the movers touched are written, in the order the line from the start to the answer first touches them (one overlapped at the start first, the one that stopped the move last; equal fractions in the order the committed state files them): the same for the same state and call.</param>
-    /// <param name="touchedCount">How many movers were touched; when more than <paramref name="touched"/> holds, the first touched that fit are written: the first 64 in the order touched, any more after them in the order the committed state files them.</param>
-    /// <param name="report">What the move met.</param>
-    /// <exception cref="ArgumentException">As the four-argument call.</exception>
-    public ResolveResult Resolve(
-        Vector3 currentPos,
-        uint currentCellId,
-        Vector3 delta,
-        float stepUpHeight,
-        in MovementOptions options,
-        uint moverId,
-        Span<uint> touched,
-        out int touchedCount,
-        out MoveReport report)
-    {
-        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry);
-        if (!(_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), moverId)))
+        long commit = _movers.CommitNumber;
+        if (!(_movers.Any && lands.Meet(_movers, in _frame, request.Position, request.CellId, MoverReach(request.Delta, in options), request.MoverId)))
         {
-            touchedCount = 0; // no mover near
-            return Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
+            return request.WithReport
+                ? new MoveResult(Reported(ref lands, in request, out MoveReport report), report, 0, commit)
+                : new MoveResult(Moved(ref lands, in request), default, 0, commit);
         }
 
         try
         {
-            ResolveResult result = Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
-            touchedCount = Touches.Along(
-                _frame, ref lands, currentPos, currentCellId, in result, stepUpHeight, options.Body, report.Wall.Kind == SurfaceKind.Mover ? report.Wall.Id : 0, touched);
-            return result;
+            commit = lands.Movers!.Commit;
+            if (touched.IsEmpty && !request.WithReport)
+            {
+                return new MoveResult(Moved(ref lands, in request), default, 0, commit);
+            }
+
+            ResolveResult result = Reported(ref lands, in request, out MoveReport report);
+            int count = Touches.Along(
+                _frame, ref lands, request.Position, request.CellId, in result, request.StepUpHeight, options.Body,
+                report.Wall.Kind == SurfaceKind.Mover ? report.Wall.Id : 0, touched);
+            return new MoveResult(result, request.WithReport ? report : default, count, commit);
         }
         finally
         {
@@ -105,26 +63,21 @@ public sealed partial class PhysicsEngine
         }
     }
 
-    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a call with no mover near has no handler to set up
-    private ResolveResult HeldReported(
-        ref Neighbourhood lands, Vector3 currentPos, uint currentCellId, Vector3 delta, float stepUpHeight, in MovementOptions options, out MoveReport report)
+    /// <summary>The request's move, no report.</summary>
+    private ResolveResult Moved(ref Neighbourhood lands, in MoveRequest request)
     {
-        try
-        {
-            return Reported(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, out report);
-        }
-        finally
-        {
-            lands.Release();
-        }
+        MovementOptions options = request.Options;
+        var query = new MoveQuery(ref lands, request.Position, request.CellId, new Vector2(request.Delta.X, request.Delta.Y), request.StepUpHeight, in options);
+        return Move(ref query, in options, request.Delta.Z);
     }
 
-    private ResolveResult Reported(
-        ref Neighbourhood lands, Vector3 currentPos, uint currentCellId, Vector3 delta, float stepUpHeight, in MovementOptions options, out MoveReport report)
+    /// <summary>The request's move, and what it met.</summary>
+    private ResolveResult Reported(ref Neighbourhood lands, in MoveRequest request, out MoveReport report)
     {
-        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
+        MovementOptions options = request.Options;
+        var query = new MoveQuery(ref lands, request.Position, request.CellId, new Vector2(request.Delta.X, request.Delta.Y), request.StepUpHeight, in options);
         lands.Reporting = true;
-        ResolveResult result = Move(ref query, in options, delta.Z);
+        ResolveResult result = Move(ref query, in options, request.Delta.Z);
         report = Report(ref lands, in result, new SurfaceContact(lands.MetKind, lands.MetId, default), in options);
         return result;
     }

@@ -43,7 +43,7 @@ public sealed partial class PhysicsEngine
     private readonly PointMover _point;
     private readonly BodyPlanner _planner;
     private readonly BodyMotion _motion;
-    private readonly Movers _movers;
+    private readonly MoverRegistry _movers;
 
     /// <summary>An engine whose world frame is global: world = landblock X·192 + landblock-local metres.</summary>
     public PhysicsEngine()
@@ -69,14 +69,14 @@ public sealed partial class PhysicsEngine
         _point = new PointMover(new OutdoorResolver(frame, portals), new IndoorResolver(frame, portals));
         _planner = new BodyPlanner(frame);
         _motion = new BodyMotion(frame, _point, new BodyResolver(_planner, frame, _point), _planner);
-        _movers = new Movers(frame);
+        _movers = new MoverRegistry(frame);
     }
 
     /// <summary>
     /// The things that move (creatures, players, doors), in this engine's world frame: register, move and remove them
-    /// here, and <see cref="Movers.Commit"/> each frame; every <c>Resolve</c> meets the state last committed.
+    /// here, and <see cref="MoverRegistry.Commit"/> each frame; every <c>Resolve</c> meets the state last committed.
     /// </summary>
-    public Movers Movers => _movers;
+    public MoverRegistry Movers => _movers;
 
     /// <summary>Number of registered landblocks.</summary>
     public int LandblockCount => _registry.Count;

@@ -111,8 +111,14 @@ public class BadInputTests
             .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("stepUpHeight");
         FluentActions.Invoking(() => engine.Resolve(pos, 0, Vector3.Zero, -0.1f))
             .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("stepUpHeight");
-        FluentActions.Invoking(() => engine.Resolve(pos, 0, Vector3.Zero, -0.1f, MovementOptions.Player, out _))
-            .Should().Throw<ArgumentOutOfRangeException>("the report overload checks as the others").WithParameterName("stepUpHeight");
+        FluentActions.Invoking(() => engine.Resolve(new MoveRequest(pos, 0, Vector3.Zero, -0.1f) { Options = MovementOptions.Player, WithReport = true }))
+            .Should().Throw<ArgumentOutOfRangeException>("the request is checked as the spec's call").WithParameterName("request").WithMessage("*request.StepUpHeight*");
+        FluentActions.Invoking(() => engine.Resolve(new MoveRequest(new Vector3(5, float.NaN, 10), 0, Vector3.Zero, 0.5f)))
+            .Should().Throw<ArgumentException>().WithParameterName("request").WithMessage("*request.Position*");
+        FluentActions.Invoking(() => engine.Resolve(new MoveRequest(pos, 0, new Vector3(float.NegativeInfinity, 0, 0), 0.5f)))
+            .Should().Throw<ArgumentException>().WithParameterName("request").WithMessage("*request.Delta*");
+        FluentActions.Invoking(() => engine.Resolve(new MoveRequest(pos, 0xA9B40041u, Vector3.Zero, 0.5f)))
+            .Should().Throw<ArgumentException>().WithParameterName("request").WithMessage("*request.CellId 0xA9B40041*");
         FluentActions.Invoking(() => engine.TryGetGround(pos, 0, -0.1f, out _, out _, out _))
             .Should().Throw<ArgumentOutOfRangeException>("the ground query's step is checked as Resolve's").WithParameterName("stepUpHeight");
         FluentActions.Invoking(() => engine.TryGetGround(pos, 0, float.NaN, out _, out _, out _))

@@ -26,7 +26,7 @@ public class CastCostTests
 
     [Theory]
     [MemberData(nameof(Frames))]
-    public void A_radius_beyond_the_bound_is_refused_naming_options(string frame)
+    public void A_radius_beyond_the_bound_is_refused_naming_the_request(string frame)
     {
         PhysicsEngine engine = Flat(frame);
         Vector3 o = engine.GetLandblockOrigin(TestData.Holtburg);
@@ -34,7 +34,7 @@ public class CastCostTests
         foreach (float radius in new[] { MathF.BitIncrement(PhysicsConstants.MaxCastRadius), 25f, 1e4f, 1e30f, float.MaxValue })
         {
             Action act = () => engine.Cast(from, 0, to, new CastOptions(radius));
-            act.Should().Throw<ArgumentOutOfRangeException>($"{frame}: radius {radius}").WithParameterName("options")
+            act.Should().Throw<ArgumentOutOfRangeException>($"{frame}: radius {radius}").WithParameterName("request")
                 .WithMessage("*Radius*", $"{frame}: radius {radius}: the message names the radius");
         }
 

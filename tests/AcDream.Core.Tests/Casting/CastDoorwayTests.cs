@@ -55,7 +55,7 @@ public class CastDoorwayTests(ITestOutputHelper output)
         PhysicsEngine engine = closed.Engine;
         var worst = new Deviations(frame);
         var before = new Dictionary<(string, float, CastFilter), CastHit>();
-        engine.Movers.GetDoorState(Door).Should().Be(DoorState.Closed);
+        engine.Movers.GetPendingDoorState(Door).Should().Be(DoorState.Closed);
         foreach ((string what, uint cell, V3 start, V3 end, _) in Through())
         {
             foreach (float r in new[] { 0f, 0.3f })
@@ -71,7 +71,7 @@ public class CastDoorwayTests(ITestOutputHelper output)
 
         engine.Movers.Open(Door);
         engine.Movers.Commit();
-        engine.Movers.GetDoorState(Door).Should().Be(DoorState.Open);
+        engine.Movers.GetPendingDoorState(Door).Should().Be(DoorState.Open);
         foreach ((string what, uint cell, V3 start, V3 end, uint endCell) in Through())
         {
             foreach (float r in new[] { 0f, 0.3f })
@@ -87,7 +87,7 @@ public class CastDoorwayTests(ITestOutputHelper output)
 
         engine.Movers.Close(Door);
         engine.Movers.Commit();
-        engine.Movers.GetDoorState(Door).Should().Be(DoorState.Closed);
+        engine.Movers.GetPendingDoorState(Door).Should().Be(DoorState.Closed);
         foreach ((string what, uint cell, V3 start, V3 end, _) in Through())
         {
             foreach (float r in new[] { 0f, 0.3f })

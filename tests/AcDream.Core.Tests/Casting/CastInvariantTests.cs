@@ -52,8 +52,8 @@ public class CastInvariantTests(ITestOutputHelper output)
             var start = new V3(lo.X + (random.NextDouble() * (hi.X - lo.X)), lo.Y + (random.NextDouble() * (hi.Y - lo.Y)), lo.Z + (random.NextDouble() * (hi.Z - lo.Z)));
             V3 move = new V3(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.6) * (random.NextDouble() * 120);
             float r = n % 4 == 0 ? 0f : (float)random.NextDouble();
-            Vector3 from = scene.World(start), to = scene.World(start + move);
-            CastHit hit = engine.Cast(from, cell, to, new CastOptions(r));
+            Vector3 from = scene.World(start), delta = scene.World(start + move) - from, to = from + delta; // the end: start plus delta, in floats
+            CastHit hit = engine.Cast(new CastRequest(from, cell, delta) { Options = new CastOptions(r) });
             string what = $"case {n} [{frame}] from {from} in 0x{cell:X8} to {to}, r {r}: {hit}";
             if (!hit.Hit)
             {
@@ -132,16 +132,16 @@ public class CastInvariantTests(ITestOutputHelper output)
     {
         // Each filtered answer is, bit for bit, the unfiltered answer of the same field without what the filter passes.
         PhysicsEngine full = Field(frame, []);
-        (string Name, CastOptions Options, PhysicsEngine Without)[] filters =
+        (string Name, CastOptions Options, uint Ignore, PhysicsEngine Without)[] filters =
         [
-            ("ignore creatures", new CastOptions(0, CastFilter.IgnoreCreatures), Field(frame, [2, 3, 4])),
-            ("solid only", new CastOptions(0, CastFilter.SolidOnly), Field(frame, [3])),
-            ("both", new CastOptions(0, CastFilter.IgnoreCreatures | CastFilter.SolidOnly), Field(frame, [2, 3, 4])),
-            ("ignore the creature 2", new CastOptions(0, IgnoreId: 2), Field(frame, [2])),
-            ("ignore the Ethereal creature 3", new CastOptions(0, IgnoreId: 3), Field(frame, [3])),
-            ("ignore the door 9", new CastOptions(0, IgnoreId: 9), Field(frame, [9])),
-            ("ignore an id not there", new CastOptions(0, IgnoreId: 77), full),
-            ("ignore the tree's Setup id (an object's, not a mover's)", new CastOptions(0, IgnoreId: 0x02000001), full),
+            ("ignore creatures", new CastOptions(0, CastFilter.IgnoreCreatures), 0, Field(frame, [2, 3, 4])),
+            ("solid only", new CastOptions(0, CastFilter.SolidOnly), 0, Field(frame, [3])),
+            ("both", new CastOptions(0, CastFilter.IgnoreCreatures | CastFilter.SolidOnly), 0, Field(frame, [2, 3, 4])),
+            ("ignore the creature 2", new CastOptions(0), 2, Field(frame, [2])),
+            ("ignore the Ethereal creature 3", new CastOptions(0), 3, Field(frame, [3])),
+            ("ignore the door 9", new CastOptions(0), 9, Field(frame, [9])),
+            ("ignore an id not there", new CastOptions(0), 77, full),
+            ("ignore the tree's Setup id (an object's, not a mover's)", new CastOptions(0), 0x02000001, full),
         ];
         Vector3 centre = full.ToWorld(MoverSmokeTests.Landblock, new Vector3(96, 96, 50));
         var random = new Random(62);
@@ -157,8 +157,8 @@ public class CastInvariantTests(ITestOutputHelper output)
             CastHit plain = full.Cast(from, 0, to, new CastOptions(r));
             for (int f = 0; f < filters.Length; f++)
             {
-                (string name, CastOptions options, PhysicsEngine without) = filters[f];
-                CastHit filtered = full.Cast(from, 0, to, options with { Radius = r });
+                (string name, CastOptions options, uint ignore, PhysicsEngine without) = filters[f];
+                CastHit filtered = full.Cast(from, 0, to, options with { Radius = r }, ignore);
                 CastHit expected = without.Cast(from, 0, to, new CastOptions(r));
                 Bits(filtered).Should().Be(Bits(expected), $"{name}, case {n}: from {from} to {to}, r {r}: filtered {filtered}; without it {expected}; unfiltered {plain}");
                 changed[f] += Bits(filtered) == Bits(plain) ? 0 : 1;

@@ -84,7 +84,7 @@ internal sealed class CastScene(PhysicsEngine engine, string frame, uint landblo
     /// </summary>
     public CastHit Check(Vector3 from, uint cellId, Vector3 to, float radius, Deviations worst, string what, CastFilter filter = CastFilter.None, uint ignoreId = 0)
     {
-        CastHit hit = Engine.Cast(from, cellId, to, new CastOptions(radius, filter, ignoreId));
+        CastHit hit = Engine.Cast(from, cellId, to, new CastOptions(radius, filter), ignoreId);
         Hit? expected = Expected(from, to, radius);
         Agree(hit, expected, from, to, radius, worst, what);
         return hit;
@@ -93,6 +93,7 @@ internal sealed class CastScene(PhysicsEngine engine, string frame, uint landblo
     /// <summary>Checks <paramref name="hit"/> against <paramref name="expected"/> (see <see cref="Check"/>).</summary>
     public void Agree(CastHit hit, Hit? expected, Vector3 from, Vector3 to, float radius, Deviations worst, string what)
     {
+        to = from + (to - from); // the end the engine casts to: its start plus its delta, in floats
         V3 a = Local(from), b = Local(to);
         double length = (b - a).Length;
         string says = $"{what} [{Frame}]: from {a} to {b} (world {from} → {to}), radius {radius}; engine {hit} (centre {Local(hit.Position)}, point {Local(hit.Point)}); reference {expected?.ToString() ?? "no contact"}";

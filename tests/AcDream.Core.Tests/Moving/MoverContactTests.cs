@@ -128,7 +128,7 @@ public class MoverContactTests(ITestOutputHelper output)
             {
                 at = engine.Resolve(at.Position, at.CellId, new Vector3(dir * speed * Frame, 0f), 0.6f, MovementOptions.Player);
                 double gap = MoverReference.ToSlab(at.Position, hinge, yaw, half);
-                if (engine.Movers.GetDoorState(9) == DoorState.Closed)
+                if (engine.Movers.GetPendingDoorState(9) == DoorState.Closed)
                 {
                     worst = Math.Min(worst, gap);
                     gap.Should().BeGreaterThanOrEqualTo(MoverKit.HumanRadius - 0.001, $"yaw {yaw}, frame {i} at {speed} m/s: {at}");
@@ -151,7 +151,7 @@ public class MoverContactTests(ITestOutputHelper output)
 
         engine.Movers.Open(9);
         engine.Movers.Commit();
-        engine.Movers.GetDoorState(9).Should().Be(DoorState.Open);
+        engine.Movers.GetPendingDoorState(9).Should().Be(DoorState.Open);
         ResolveResult through = Walk(Axis + (across * 3f), -across, 4f, 45);
         Vector2.Dot(new Vector2(through.Position.X - hinge.X, through.Position.Y - hinge.Y), across).Should().BeLessThan(-1.5f, $"open, it passes: {through}");
 
@@ -162,14 +162,14 @@ public class MoverContactTests(ITestOutputHelper output)
         for (int i = 0; i < 3; i++)
         {
             engine.Movers.Commit();
-            engine.Movers.GetDoorState(9).Should().Be(DoorState.Closing, $"commit {i}: held while the player stands in it");
+            engine.Movers.GetPendingDoorState(9).Should().Be(DoorState.Closing, $"commit {i}: held while the player stands in it");
         }
 
         ResolveResult leaving = engine.Resolve(inDoor, Outdoor, new Vector3(across * 2f, 0f), 0.6f, MovementOptions.Player, 1u);
         leaving.Outcome.Should().Be(ResolveOutcome.Moved, $"the held door is Ethereal: the player walks out of it: {leaving}");
         engine.Movers.Move(1, leaving.Position, leaving.CellId, Quaternion.Identity);
         engine.Movers.Commit();
-        engine.Movers.GetDoorState(9).Should().Be(DoorState.Closed, "closed at the first commit with nothing in it");
+        engine.Movers.GetPendingDoorState(9).Should().Be(DoorState.Closed, "closed at the first commit with nothing in it");
         ResolveResult back = Walk(Axis + (across * 3f), -across, 4f, 60);
         Vector2.Dot(new Vector2(back.Position.X - hinge.X, back.Position.Y - hinge.Y), across).Should().BeGreaterThan(0.4f, $"closed again, it blocks: {back}");
         output.WriteLine($"yaw {yaw}: nearest a closed slab {worst:F6} m (radius {MoverKit.HumanRadius})");

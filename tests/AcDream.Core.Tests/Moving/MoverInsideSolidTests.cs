@@ -213,11 +213,11 @@ public class MoverInsideSolidTests(ITestOutputHelper output)
         engine.Movers.Close(9);
         engine.Movers.Commit();
         engine.Movers.Commit();
-        engine.Movers.GetDoorState(9).Should().Be(DoorState.Closing, "the creature stands wholly inside the slab: the door holds");
+        engine.Movers.GetPendingDoorState(9).Should().Be(DoorState.Closing, "the creature stands wholly inside the slab: the door holds");
 
         engine.Movers.Move(2, At(engine, Door + new Vector2(0f, 0.3f + 0.15f + 0.01f)), Outdoor, Quaternion.Identity);
         engine.Movers.Commit();
-        engine.Movers.GetDoorState(9).Should().Be(DoorState.Closed, "closed once the creature stands clear of it");
+        engine.Movers.GetPendingDoorState(9).Should().Be(DoorState.Closed, "closed once the creature stands clear of it");
     }
 
     public static TheoryData<string, int> Walks() => new() { { "centred", 41 }, { "global", 42 }, { "far", 43 } };

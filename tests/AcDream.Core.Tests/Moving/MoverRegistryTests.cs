@@ -128,7 +128,7 @@ public class MoverRegistryTests
         setUnknown.Should().Throw<ArgumentException>().Where(e => e.ParamName == "id");
         Action closeUnknown = () => movers.Close(8);
         closeUnknown.Should().Throw<ArgumentException>().Where(e => e.ParamName == "doorId" && e.Message.Contains("0x00000008 is not a registered door"));
-        Action stateOfCreature = () => movers.GetDoorState(6);
+        Action stateOfCreature = () => movers.GetPendingDoorState(6);
         stateOfCreature.Should().Throw<ArgumentException>().Where(e => e.ParamName == "doorId" && e.Message.Contains("0x00000006"));
 
         // A refused move leaves the mover where it was.
@@ -239,9 +239,9 @@ public class MoverRegistryTests
         movers.Add(9, new MoverShape(MoverReference.SlabModel(1.2f, 2.2f)), At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Door);
         movers.Commit();
         movers.Close(9); // closing a closed door: nothing to do
-        movers.GetDoorState(9).Should().Be(DoorState.Closed);
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Closed);
         movers.Commit();
-        movers.GetDoorState(9).Should().Be(DoorState.Closed);
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Closed);
 
         // Held open by a creature standing in it: Closing; opened again, Open, and it stays open once the creature leaves.
         movers.Add(2, MoverKit.Human, At(engine, Door), Outdoor, Quaternion.Identity, MoverState.Creature);
@@ -249,12 +249,12 @@ public class MoverRegistryTests
         movers.Commit();
         movers.Close(9);
         movers.Commit();
-        movers.GetDoorState(9).Should().Be(DoorState.Closing);
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Closing);
         movers.Open(9);
-        movers.GetDoorState(9).Should().Be(DoorState.Open);
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Open);
         movers.Move(2, At(engine, Door + new Vector2(5f, 0f)), Outdoor, Quaternion.Identity);
         movers.Commit();
-        movers.GetDoorState(9).Should().Be(DoorState.Open, "opened again, it is not closing");
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Open, "opened again, it is not closing");
         movers.GetState(9).Physics.Should().HaveFlag(PhysicsStateFlags.Ethereal);
 
         // Closing, then given a state: the state is the door's, and it closes no more by itself.
@@ -262,14 +262,14 @@ public class MoverRegistryTests
         movers.Commit();
         movers.Close(9);
         movers.Commit();
-        movers.GetDoorState(9).Should().Be(DoorState.Closing);
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Closing);
         movers.SetState(9, MoverState.Door with { Physics = PhysicsStateFlags.Ethereal });
-        movers.GetDoorState(9).Should().Be(DoorState.Open);
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Open);
         movers.Move(2, At(engine, Door + new Vector2(5f, 0f)), Outdoor, Quaternion.Identity);
         movers.Commit();
-        movers.GetDoorState(9).Should().Be(DoorState.Open);
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Open);
         movers.SetState(9, MoverState.Door);
-        movers.GetDoorState(9).Should().Be(DoorState.Closed);
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Closed);
     }
 
     [Theory]
@@ -300,13 +300,13 @@ public class MoverRegistryTests
         movers.Commit();
         movers.Close(9);
         movers.Commit();
-        movers.GetDoorState(9).Should().Be(holds ? DoorState.Closing : DoorState.Closed, what);
-        movers.GetDoorState(9).Should().Be(holds ? DoorState.Closing : DoorState.Closed, what);
+        movers.GetPendingDoorState(9).Should().Be(holds ? DoorState.Closing : DoorState.Closed, what);
+        movers.GetPendingDoorState(9).Should().Be(holds ? DoorState.Closing : DoorState.Closed, what);
         if (holds)
         {
             movers.Remove(2);
             movers.Commit();
-            movers.GetDoorState(9).Should().Be(DoorState.Closed, $"{what}: gone, the door closes");
+            movers.GetPendingDoorState(9).Should().Be(DoorState.Closed, $"{what}: gone, the door closes");
         }
     }
 
@@ -345,10 +345,10 @@ public class MoverRegistryTests
         movers.Commit();
         movers.Close(9);
         movers.Commit();
-        movers.GetDoorState(9).Should().Be(DoorState.Closing, $"{dx}, {dy}");
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Closing, $"{dx}, {dy}");
         movers.Move(2, there + new Vector3(dx * 2f, dy * 2f, 0f), neighbourCell, Quaternion.Identity);
         movers.Commit();
-        movers.GetDoorState(9).Should().Be(DoorState.Closed, $"{dx}, {dy}");
+        movers.GetPendingDoorState(9).Should().Be(DoorState.Closed, $"{dx}, {dy}");
     }
 
     [Fact]
@@ -523,7 +523,7 @@ public class MoverRegistryTests
         }
 
         bytes.Should().Be(0);
-        movers.GetDoorState(100).Should().Be(DoorState.Closed);
+        movers.GetPendingDoorState(100).Should().Be(DoorState.Closed);
         Ray(engine, new Vector2(15f, 16f), new Vector2(15f, 26f)).Id.Should().Be(3u);
     }
 

@@ -17,6 +17,9 @@ internal sealed partial class MoverFrame
     /// <summary>Odd while the writer rewrites this frame, even otherwise, one more at each change: a call that reads without holding (<see cref="Occupied"/>) checks it did not change.</summary>
     public int Sequence;
 
+    /// <summary>The number of the commit that wrote this frame (<see cref="MoverRegistry.CommitNumber"/>).</summary>
+    public long Commit;
+
     public int Count;
     public uint[] Ids = [];
     public MoverState[] States = [];

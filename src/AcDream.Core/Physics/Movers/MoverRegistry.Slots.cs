@@ -72,6 +72,7 @@ public sealed partial class MoverRegistry
         public MoverShape Shape;
         public MoverState State;
         public bool Closing;
+        public DoorState? Committed; // a door's state in the last commit; null before its first
         public int X, Y;
         public Vector3 Local;
         public double Cos, Sin;

@@ -174,17 +174,6 @@ public sealed partial class MoverRegistry
         }
     }
 
-    /// <summary>Where a door is after the changes made so far, committed or not (moves meet the state last committed): Closing from <see cref="Close"/> to the commit that makes it solid.</summary>
-    /// <exception cref="ArgumentException">The id is not a registered door.</exception>
-    public DoorState GetDoorState(uint doorId)
-    {
-        lock (_write)
-        {
-            ref Slot door = ref FindDoor(doorId);
-            return door.Closing ? DoorState.Closing : (door.State.Physics & PhysicsStateFlags.Ethereal) != 0 ? DoorState.Open : DoorState.Closed;
-        }
-    }
-
     /// <summary>
     /// Publishes every change since the last commit as one whole state: calls that start after it see all of them,
     /// calls under way finish on the state they started with. Doors told to close become solid here once nothing
@@ -196,6 +185,7 @@ public sealed partial class MoverRegistry
         {
             if (_count == 0)
             {
+                Committed(null);
                 Interlocked.Exchange(ref _current, null);
                 return;
             }
@@ -204,6 +194,7 @@ public sealed partial class MoverRegistry
             Interlocked.Increment(ref next.Sequence); // odd: being written (a call reading it unheld sees the change)
             Fill(next);
             HoldDoors(next);
+            Committed(next);
             Interlocked.Increment(ref next.Sequence);
             Interlocked.Exchange(ref _current, next); // (a full fence: the frame is written before it is seen)
         }

@@ -136,9 +136,25 @@ internal ref struct MoveQuery
     {
         if (!(Geometry.IsFinite(pos) && Geometry.IsFinite(delta) && float.IsFinite(stepUp) && stepUp >= 0f && IsCellOfTheWorld(cellId)))
         {
-            ThrowInvalid(pos, cellId, delta, stepUp);
+            ThrowInvalid(pos, cellId, delta, stepUp, Spec);
         }
     }
+
+    /// <summary>The check of the four arguments (<c>Validate(Vector3, uint, Vector3, float)</c>) on a <see cref="MoveRequest"/>: the exception names the argument <c>request</c> and the field.</summary>
+    public static void Validate(in MoveRequest request)
+    {
+        if (!(Geometry.IsFinite(request.Position) && Geometry.IsFinite(request.Delta) && float.IsFinite(request.StepUpHeight)
+              && request.StepUpHeight >= 0f && IsCellOfTheWorld(request.CellId)))
+        {
+            ThrowInvalid(request.Position, request.CellId, request.Delta, request.StepUpHeight, Request);
+        }
+    }
+
+    /// <summary>How the spec's call names its arguments: position, cell, delta, step; its <c>paramName</c> is each one's.</summary>
+    private static readonly string[] Spec = ["currentPos", "currentCellId", "delta", "stepUpHeight"];
+
+    /// <summary>How a request's fields are named; its <c>paramName</c> is <c>request</c>.</summary>
+    private static readonly string[] Request = ["request.Position", "request.CellId", "request.Delta", "request.StepUpHeight"];
 
 
     internal static bool IsCellOfTheWorld(uint cellId)
@@ -148,34 +164,36 @@ internal ref struct MoveQuery
             && CellIds.IsInWorld(CellIds.LandblockX(cellId), CellIds.LandblockY(cellId));
     }
 
-    /// <summary>The exception for the first argument <see cref="Validate"/> finds wrong.</summary>
+    /// <summary>The exception for the first argument <c>Validate</c> finds wrong.</summary>
     [DoesNotReturn]
     [MethodImpl(MethodImplOptions.NoInlining)]
-    private static void ThrowInvalid(Vector3 pos, uint cellId, Vector3 delta, float stepUp)
+    private static void ThrowInvalid(Vector3 pos, uint cellId, Vector3 delta, float stepUp, string[] names)
     {
+        bool request = ReferenceEquals(names, Request);
+        string Param(int i) => request ? "request" : names[i];
         if (!Geometry.IsFinite(pos))
         {
-            throw new ArgumentException($"currentPos {pos} must be finite.", "currentPos");
+            throw new ArgumentException($"{names[0]} {pos} must be finite (cell 0x{cellId:X8}).", Param(0));
         }
 
         if (!Geometry.IsFinite(delta))
         {
-            throw new ArgumentException($"delta {delta} must be finite.", nameof(delta));
+            throw new ArgumentException($"{names[2]} {delta} must be finite (cell 0x{cellId:X8}).", Param(2));
         }
 
         if (!float.IsFinite(stepUp) || stepUp < 0f)
         {
-            throw new ArgumentOutOfRangeException("stepUpHeight", stepUp, "stepUpHeight must be a finite height ≥ 0 m.");
+            throw new ArgumentOutOfRangeException(Param(3), stepUp, $"{names[3]} must be a finite height ≥ 0 m (cell 0x{cellId:X8}).");
         }
 
         uint low = cellId & 0xFFFF;
         if ((low > PhysicsConstants.CellsPerSide * PhysicsConstants.CellsPerSide && low < CellIds.FirstIndoor) || low > CellIds.LastIndoor)
         {
-            throw new ArgumentException($"currentCellId 0x{cellId:X8} is not a cell: outdoor cells are 0x0001..0x0040, indoor 0x0100..0xFFFD.", "currentCellId");
+            throw new ArgumentException($"{names[1]} 0x{cellId:X8} is not a cell: outdoor cells are 0x0001..0x0040, indoor 0x0100..0xFFFD.", Param(1));
         }
 
         throw new ArgumentException(
-            $"currentCellId 0x{cellId:X8} names a landblock off the world: X and Y must be within 0x00..0x{PhysicsConstants.MaxLandblockIndex:X2}.", "currentCellId");
+            $"{names[1]} 0x{cellId:X8} names a landblock off the world: X and Y must be within 0x00..0x{PhysicsConstants.MaxLandblockIndex:X2}.", Param(1));
     }
 
 }
