@@ -13,7 +13,7 @@ namespace AcDream.App.Scenes;
 internal static partial class WalkPage
 {
     /// <summary>Terrain is sampled on a grid this many metres apart, over the walk's extent padded by <see cref="TerrainMargin"/>.</summary>
-    internal const float TerrainStep = 1f;
+    internal const float TerrainStep = 2f;
 
     /// <summary>How far past the route and the creatures' paths the terrain patch reaches, metres.</summary>
     internal const float TerrainMargin = 15f;

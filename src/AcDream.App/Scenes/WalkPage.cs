@@ -8,8 +8,8 @@ namespace AcDream.App.Scenes;
 /// Writes a walk as one self-contained HTML page that scrubs it in 3-D (src/AcDream.App/web/walk-page.html and
 /// walk-page.js): the cells' physics polygons, the objects, the doors, a patch of terrain, the creatures, the player's
 /// body and the chase camera's eye at each frame, what the frame's steps met, and the route; a timeline and the
-/// arrow keys step the frames. three.js (src/AcDream.App/web/three, MIT) goes in as ES modules through an import
-/// map of <c>data:</c> URLs, and the walk as JSON (<see cref="WriteData"/>), so the page opens from disk with no
+/// arrow keys step the frames. three.js (src/AcDream.App/web/three, MIT) goes in as an ES module through an import
+/// map of a <c>data:</c> URL, and the walk as JSON (<see cref="WriteData"/>), so the page opens from disk with no
 /// server and no network.
 /// </summary>
 internal static partial class WalkPage
@@ -20,21 +20,8 @@ internal static partial class WalkPage
     /// <summary>The page for <paramref name="record"/> run in <paramref name="world"/>.</summary>
     public static string Build(WalkRecord record, HoltburgWorld world)
     {
-        // three.module.js imports its core by a relative path, which a data: URL cannot resolve: it is named by a bare
-        // specifier that the import map resolves instead.
-        const string coreImport = "from './three.core.js'";
-        string module = Resource("web/three/three.module.js");
-        if (!module.Contains(coreImport, StringComparison.Ordinal))
-        {
-            throw new InvalidOperationException($"three.module.js {ThreeVersion} no longer imports {coreImport}: the page's import map needs updating.");
-        }
-
-        var imports = new Dictionary<string, string>
-        {
-            ["three"] = DataUrl(module.Replace(coreImport, "from 'three/core'", StringComparison.Ordinal)),
-            ["three/core"] = DataUrl(Resource("web/three/three.core.js")),
-        };
-        string importMap = JsonSerializer.Serialize(new { imports });
+        // Base64 needs no escaping in JSON or HTML.
+        string importMap = "{\"imports\":{\"three\":\"" + DataUrl(Resource("web/three/three.module.min.js")) + "\"}}";
 
         using var data = new MemoryStream();
         using (var json = new Utf8JsonWriter(data)) // the default encoder escapes '<', '>' and '&': safe inside <script>

@@ -75,7 +75,14 @@ window.walkPage = { ready: true, count, loadMs: performance.now() - started, sho
 
 function buildScene() {
   const view = document.getElementById('view');
-  const renderer = new THREE.WebGLRenderer({ antialias: true });
+  // Smoothed edges on a GPU; not when WebGL is drawn in software (headless, no GPU), where they cost the most.
+  let renderer = new THREE.WebGLRenderer({ antialias: false });
+  const gl = renderer.getContext(), info = gl.getExtension('WEBGL_debug_renderer_info');
+  if (info && !/SwiftShader|llvmpipe|software/i.test(String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)))) {
+    renderer.dispose();
+    renderer.forceContextLoss();
+    renderer = new THREE.WebGLRenderer({ antialias: true });
+  }
   renderer.setPixelRatio(window.devicePixelRatio);
   view.appendChild(renderer.domElement);
   const scene = new THREE.Scene();
