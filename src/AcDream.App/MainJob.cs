@@ -9,9 +9,9 @@ namespace AcDream.App;
 
 /// <summary>
 /// The main job: runs a scene (the embedded Holtburg walk by default), prints the summary and writes
-/// the SVG. Exit status 0 on success, 2 on a bad option or scene file, 1 when the SVG cannot be written.
-/// The SVG is written to a temporary file and renamed over the old one, so a failure never leaves a
-/// damaged SVG.
+/// the SVG and the page beside it (<see cref="WalkPage"/>). Exit status 0 on success, 2 on a bad option or
+/// scene file, 1 when the SVG or the page cannot be written. Each is written to a temporary file and renamed
+/// over the old one, so a failure never leaves a damaged file.
 /// </summary>
 internal static class MainJob
 {
@@ -26,17 +26,18 @@ internal static class MainJob
         the cells visited, moves slid along walls and refused, where a chase camera's boom
         was pulled in, what the scene's pointer rays met, airborne frames, landblocks
         streamed, the end point.
-        Writes an SVG (top-down map and Z profile) to the output folder.
+        Writes an SVG (top-down map and Z profile) to the output folder, and beside it a
+        page (.html, opens from disk) that scrubs the walk in 3-D.
 
         Options:
           --scene FILE   run this scene file (JSON, see docs/scenes.md) instead of the
                          embedded Holtburg walk
-          --out DIR      folder for the SVG (default: out)
+          --out DIR      folder for the SVG and the page (default: out)
           --frames N     stop after N frames (30 frames = 1 s)
           --quiet        print only the SVG path
           --help         print this text
 
-        Exit status: 0 done, 1 the SVG could not be written, 2 a bad option or scene file.
+        Exit status: 0 done, 1 the SVG or the page could not be written, 2 a bad option or scene file.
         """;
 
     /// <summary>Runs the job with command-line <paramref name="args"/>; returns the exit status.</summary>
@@ -102,6 +103,7 @@ internal static class MainJob
         WalkRecord record = SceneRunner.Run(scene, world, frames);
 
         string svgPath = Path.GetFullPath(Path.Combine(outDir ?? "out", FileName(scene.Name) + ".svg"));
+        string pagePath = Path.ChangeExtension(svgPath, ".html");
         XDocument svg = WalkSvg.Build(record, world);
         try
         {
@@ -111,14 +113,15 @@ internal static class MainJob
                 using var writer = XmlWriter.Create(stream, new XmlWriterSettings { Encoding = new UTF8Encoding(false), Indent = true });
                 svg.Save(writer);
             });
+            WriteAtomically(pagePath, stream => WalkPage.Write(record, world, stream));
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            error.WriteLine($"error: cannot write the SVG {svgPath}: {e.Message}");
+            error.WriteLine($"error: cannot write the SVG {svgPath} or the page {pagePath}: {e.Message}");
             return 1;
         }
 
-        output.Write(quiet ? $"SVG: {svgPath}{System.Environment.NewLine}" : WalkReport.Format(record, svgPath));
+        output.Write(quiet ? $"SVG: {svgPath}{System.Environment.NewLine}" : WalkReport.Format(record, svgPath) + $"Page: {pagePath}{System.Environment.NewLine}");
         return 0;
     }
 
