@@ -146,6 +146,25 @@ public sealed class CaptureTests(ITestOutputHelper log) : IDisposable
         RunApp("replay").Status.Should().Be(2);
     }
 
+    [Fact]
+    public void Of_several_bad_lines_the_first_is_named()
+    {
+        string[] lines = CorpusLines(3000);
+        lines[2800] = lines[2800].Replace("\"kind\":", "\"kinds\":");
+        lines[400] = "{\"kind\":\"commit\"}";
+        lines[1900] = "[]";
+        Action read = () => CaptureReader.ReadFile(Write(lines));
+        read.Should().Throw<CaptureFormatException>().Which.Should().Match<CaptureFormatException>(e => e.Line == 401 && e.Field == "answer");
+    }
+
+    [Fact]
+    public void The_usage_text_names_the_capture_option_and_the_replay_command()
+    {
+        (int status, string output, _) = RunApp("--help");
+        status.Should().Be(0);
+        output.Should().Contain("--capture FILE").And.Contain("-- replay FILE").And.Contain("replay FILE      replays a capture");
+    }
+
     private static string[] CorpusLines(int count)
     {
         using var reader = new StreamReader(new GZipStream(File.OpenRead(Corpus), CompressionMode.Decompress));

@@ -7,7 +7,8 @@ namespace AcDream.App.Capture;
 /// <summary>
 /// Reads a capture (<see cref="CaptureJson"/>) whole and checks every line before anything is used: a line that is not
 /// JSON, lacks a field, has a field of the wrong type or one it does not know, or names an unknown kind is refused with
-/// a <see cref="CaptureFormatException"/> naming the line and the field, and nothing is returned.
+/// a <see cref="CaptureFormatException"/> naming the line and the field (the first bad line's), and nothing is returned.
+/// The lines are parsed on all cores.
 /// </summary>
 internal static partial class CaptureReader
 {
@@ -56,13 +57,26 @@ internal static partial class CaptureReader
         }
 
         CaptureHeader header = ParseLine(lines[0], 1, line => line.Header());
-        var calls = new List<CaptureCall>(lines.Length - 1);
-        for (int i = 1; i < lines.Length; i++)
+        var calls = new CaptureCall[lines.Length - 1];
+        CaptureFormatException? first = null;
+        object gate = new();
+        Parallel.For(1, lines.Length, (i, loop) =>
         {
-            calls.Add(ParseLine(lines[i], i + 1, line => line.Call()));
-        }
+            try
+            {
+                calls[i - 1] = ParseLine(lines[i], i + 1, line => line.Call());
+            }
+            catch (CaptureFormatException e)
+            {
+                lock (gate)
+                {
+                    first = first is null || e.Line < first.Line ? e : first;
+                }
 
-        return (header, calls);
+                loop.Break(); // the lines before it are still read: the error named is the first bad line's
+            }
+        });
+        return first is null ? (header, [.. calls]) : throw first;
     }
 
     private static T ParseLine<T>(string text, int number, Func<Line, T> parse)
@@ -95,11 +109,12 @@ internal static partial class CaptureReader
 
         public CaptureHeader Header()
         {
-            Known(root, "", "kind", "format", "version", "scene", "frame");
             if (Text(root, "", "kind") != "header")
             {
                 throw Error("kind", "the first line is the header: \"kind\" is \"header\".");
             }
+
+            Known(root, "", "kind", "format", "version", "scene", "frame");
 
             if (Text(root, "", "format") != CaptureJson.Format)
             {
