@@ -27,6 +27,11 @@ namespace AcDream.Core.Physics;
 /// them from several threads must be safe for that, and a capture of them replays exactly only where the calls' order did
 /// not matter. Positions are world metres in the engine's frame (<see cref="PhysicsEngine(uint)"/>).
 /// </para>
+/// <para>
+/// A recorder should not throw: an exception it throws reaches the caller after the call has taken effect (the registry's
+/// lock released on the way out). It should return quickly, as the caller waits for it, and keep nothing it is handed
+/// but copies (the span is the caller's).
+/// </para>
 /// </remarks>
 public interface IEngineRecorder
 {
