@@ -33,7 +33,7 @@ public enum DrawKind : byte
     /// <summary>A contact: from the point where the body (or point) met a wall, along the wall's unit normal, <see cref="PhysicsEngine.DrawNormalLength"/> long; id: the request's mover id.</summary>
     Contact,
 
-    /// <summary>The floor triangle the answer stands on (terrain, a cell's or an object's floor); id: the outdoor cell, cell or object.</summary>
+    /// <summary>The floor triangle under the answer's centre that it stands on (terrain, a cell's or an object's floor); id: the outdoor cell, cell or object.</summary>
     Floor,
 
     /// <summary>The floor triangle under the body's footprint that holds it where the ground under its centre does not (footing); id: the cell or object.</summary>

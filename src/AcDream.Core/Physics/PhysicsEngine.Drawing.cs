@@ -90,8 +90,8 @@ public sealed partial class PhysicsEngine
     /// <summary>
     /// <see cref="Resolve(in MoveRequest, Span{uint})"/> (with no touches asked), drawing into <paramref name="sink"/> what
     /// the move saw: each sub-step of its sweep (<see cref="DrawKind.SubStep"/>, the last ending at the answer), the walls
-    /// it met with their normals (<see cref="DrawKind.Contact"/>), the edge it was held at, the ceiling its rise met, and the
-    /// floor the answer stands on with, with footing, the floor under its footprint that holds it.
+    /// it met with their normals (<see cref="DrawKind.Contact"/>), the edge it was held at, the ceiling its rise met, and what
+    /// the answer stands on: the floor under its centre or, when footing holds it there, the floor under its footprint.
     /// </summary>
     /// <remarks>
     /// The answer is bit for bit that of <c>Resolve</c> with the same request: the drawing is read from the move, never into

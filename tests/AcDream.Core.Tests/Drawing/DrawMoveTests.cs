@@ -1,5 +1,8 @@
 using System.Numerics;
+using AcDream.App.Fixtures;
+using AcDream.Core.Dat;
 using AcDream.Core.Physics;
+using AcDream.Core.Tests.Robustness;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Tests.Drawing;
@@ -7,7 +10,8 @@ namespace AcDream.Core.Tests.Drawing;
 /// <summary>
 /// <see cref="PhysicsEngine.DrawMove"/> on the real Holtburg cottage: a walk into a wall draws its sub-steps (chained, the
 /// last ending at the answer), a contact along the answer's normal and the floor it stands on; a jump under the main
-/// room's ceiling draws the ceiling at 96.8 m; the answers are bit for bit those of <c>Resolve</c>, with and without a
+/// room's ceiling draws the ceiling at 96.8 m; at the small building's plinth, the support under the footprint and the
+/// edge held at; the answers are bit for bit those of <c>Resolve</c>, with and without a
 /// sink; nothing is allocated per call.
 /// </summary>
 public class DrawMoveTests(ITestOutputHelper output)
@@ -130,6 +134,55 @@ public class DrawMoveTests(ITestOutputHelper output)
 
         (GC.GetAllocatedBytesForCurrentThread() - before).Should().Be(0);
         sink.Counts[(int)DrawKind.Ceiling].Should().Be(500);
+    }
+
+    [Theory]
+    [MemberData(nameof(Frames))]
+    public void At_the_plinths_edge_it_draws_the_support_and_the_edge_held_at(string frame)
+    {
+        PhysicsEngine engine = RealObjects.HoltburgWithCellarStairs(frame);
+        Frame plinth = ObjectPlacements.SmallBuildingShell().Frame;
+        Vector3 Building(float x, float y, float z)
+        {
+            (double px, double py, double pz) = ObjectKit.Place(plinth, new Vector3(x, y, z));
+            return engine.ToWorld(TestData.Holtburg, new Vector3((float)px, (float)py, (float)pz));
+        }
+
+        Vector2 Local(Vector3 world)
+        {
+            Vector3 v = Vector3.Transform(engine.ToLandblockLocal(TestData.Holtburg, world) - plinth.Origin, Quaternion.Conjugate(Quaternion.Normalize(plinth.Orientation)));
+            return new Vector2(v.X, v.Y);
+        }
+
+        // 0.076 m past the plinth's east edge (object-local x 4, its top at 96 m): held by the plinth's floor under its footprint.
+        var still = new MoveRequest(Building(4.076f, 1f, 2f), 0xA9B40000u, Vector3.Zero, 0.6f) { Options = MovementOptions.Player };
+        var sink = new RecordingSink();
+        ResolveResult held = engine.DrawMove(in still, sink).Answer;
+        Bits(held).Should().Equal(Bits(engine.Resolve(in still).Answer));
+        (held.IsOnGround, engine.ToLandblockLocal(TestData.Holtburg, held.Position).Z).Should().Be((true, 96f), $"{frame}: on the plinth");
+        sink.Of(DrawKind.Floor).Should().BeEmpty("the ground under its centre (the terrain, 2 m down) does not hold it");
+        Drawn support = sink.Of(DrawKind.Support).Should().ContainSingle().Subject;
+        float tolerance = 1e-4f + support.Points.Max(Distances.Rounding) + Distances.Rounding(held.Position);
+        support.Points.Should().OnlyContain(p => MathF.Abs(p.Z - held.Position.Z) <= tolerance, "the plinth's top is level with the feet");
+        Vector3 under = held.Position with { Z = support.Points[0].Z };
+        Distances.ToTriangle(under, support.Points[0], support.Points[1], support.Points[2])
+            .Should().BeInRange(0.076f - 1e-3f - tolerance, (0.48f * PhysicsConstants.SupportReach) + tolerance, $"{frame}: the support is the plinth's top, its edge 0.076 m from the centre");
+
+        // Head on at the edge, from 0.1 m inside it: edge slide holds it there, at the edge.
+        var headOn = new MoveRequest(Building(3.9f, 1f, 2f), 0xA9B40000u, (Building(1f, 0f, 2f) - Building(0f, 0f, 2f)) * 0.5f, 0.6f) { Options = MovementOptions.Player };
+        sink = new RecordingSink();
+        ResolveResult stopped = engine.DrawMove(in headOn, sink).Answer;
+        Bits(stopped).Should().Equal(Bits(engine.Resolve(in headOn).Answer));
+        stopped.Outcome.Should().BeOneOf([ResolveOutcome.Edge, ResolveOutcome.Slid], $"{frame}: held at the edge");
+        Drawn edge = sink.Of(DrawKind.Edge).Should().ContainSingle().Subject;
+        foreach (Vector3 end in edge.Points)
+        {
+            Local(end).X.Should().BeApproximately(4f, 1e-3f + (2f * Distances.Rounding(end)), $"{frame}: on the plinth's east edge");
+            end.Z.Should().Be(headOn.Position.Z, "at the feet's height");
+        }
+
+        Vector3.Distance(edge.Points[0], edge.Points[1]).Should().BeApproximately(PhysicsEngine.DrawNormalLength, 1e-4f + (2f * Distances.Rounding(edge.Points[0])));
+        output.WriteLine($"[{frame}] held at {engine.ToLandblockLocal(TestData.Holtburg, held.Position)}; head on: {stopped.Outcome}, edge x {Local(edge.Points[0]).X:F5}");
     }
 
     private static Vector3 Direction(Drawn line) => Vector3.Normalize(line.Points[1] - line.Points[0]);

@@ -3,8 +3,8 @@ using System.Numerics;
 namespace AcDream.Core.Physics.Drawing;
 
 /// <summary>
-/// What an answer stands on, drawn after its move: the floor triangle under its feet (as the report's ground probe finds
-/// it) and, with footing, the floor under its footprint that holds it where the ground under its centre does not.
+/// What an answer stands on, drawn after its move, as the report finds it: the floor triangle under its feet (the ground
+/// probe at its centre) or, with footing, when that is not at its feet, the floor under its footprint that holds it.
 /// </summary>
 internal static class FootingDrawing
 {
@@ -22,8 +22,11 @@ internal static class FootingDrawing
 
         var at = new NearDrawing.At(frame, place.X, place.Y);
         Ground.TryUnder(ref lands, in place, result.Position.Z, PhysicsConstants.GroundTolerance, out float z, out SurfaceContact floor);
-        Under(in at, in place, floor, z, ref sink);
-        if (z != result.Position.Z && options.InThreeD && options.Footing)
+        if (z == result.Position.Z || !(options.InThreeD && options.Footing))
+        {
+            Under(in at, in place, floor, z, ref sink); // the ground under the centre holds it
+        }
+        else
         {
             const float tolerance = PhysicsConstants.GroundTolerance;
             float reach = options.Body!.Value.Radius * PhysicsConstants.SupportReach;
