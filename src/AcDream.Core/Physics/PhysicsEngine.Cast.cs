@@ -1,6 +1,9 @@
 using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Casting;
 
 namespace AcDream.Core.Physics;
 
@@ -52,7 +55,7 @@ public sealed partial class PhysicsEngine
         Vector3 from = request.From, to = from + request.Delta;
         uint fromCellId = request.FromCellId;
         CastOptions options = request.Options;
-        if (!(Geometry.IsFinite(from) && Geometry.IsFinite(to) && options.Radius >= 0f && options.Radius <= PhysicsConstants.MaxCastRadius && MoveQuery.IsCellOfTheWorld(fromCellId)))
+        if (!(Geometry.IsFinite(from) && Geometry.IsFinite(to) && options.Radius >= 0f && options.Radius <= PhysicsConstants.MaxCastRadius && CellIds.IsCellOfTheWorld(fromCellId)))
         {
             ThrowInvalidCast(in request);
         }

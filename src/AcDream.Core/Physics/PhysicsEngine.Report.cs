@@ -1,5 +1,8 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Point;
+using AcDream.Core.Physics.Body;
 
 namespace AcDream.Core.Physics;
 

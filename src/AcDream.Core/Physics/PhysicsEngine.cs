@@ -1,5 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Point;
+using AcDream.Core.Physics.Body;
 
 namespace AcDream.Core.Physics;
 
@@ -69,7 +73,7 @@ public sealed partial class PhysicsEngine
         _point = new PointMover(new OutdoorResolver(frame, portals), new IndoorResolver(frame, portals));
         _planner = new BodyPlanner(frame);
         _motion = new BodyMotion(frame, _point, new BodyResolver(_planner, frame, _point), _planner);
-        _movers = new MoverRegistry(frame);
+        _movers = new MoverRegistry(frame, MoverSolid.StandsIn);
     }
 
     /// <summary>

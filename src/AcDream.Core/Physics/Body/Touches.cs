@@ -1,6 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Movers;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 /// <summary>The movers a call's move touched, blocking or not, for the caller that asks (a pass after the move).</summary>
 internal static class Touches
