@@ -78,9 +78,7 @@ public sealed partial class PhysicsEngine
             }
 
             ResolveResult result = engine.Reported(ref lands, in request, out MoveReport met);
-            int count = Touches.Along(
-                engine._frame, ref lands, request.Position, request.CellId, in result, request.StepUpHeight, request.Options.Body,
-                met.Wall.Kind == SurfaceKind.Mover ? met.Wall.Id : 0, _touched);
+            int count = Touches.Along(engine._frame, ref lands, in request, in result, met.Wall.Kind == SurfaceKind.Mover ? met.Wall.Id : 0, _touched);
             return new MoveResult(result, request.WithReport ? met : default, count, commit);
         }
     }
