@@ -22,6 +22,17 @@ public static class CellIds
     /// <summary>The cell number a portal names when it leads out of a building, onto the terrain: 0xFFFF.</summary>
     public const ushort OutdoorPortalTarget = 0xFFFF;
 
+    /// <summary>
+    /// Whether the id names a cell of the world: an outdoor cell (0x0001..0x0040), an indoor one (0x0100..0xFFFD), the
+    /// landblock (0xFFFF) or its object list (0xFFFE), of a landblock whose X and Y are in the world (not 0xFF).
+    /// </summary>
+    internal static bool IsCellOfTheWorld(uint cellId)
+    {
+        uint low = cellId & 0xFFFF;
+        return !((low > PhysicsConstants.CellsPerSide * PhysicsConstants.CellsPerSide && low < FirstIndoor) || low > LastIndoor)
+            && IsInWorld(LandblockX(cellId), LandblockY(cellId));
+    }
+
     /// <summary>Landblock X index (0..0xFE in the world) of any id.</summary>
     public static int LandblockX(uint id) => (int)(id >> 24);
 

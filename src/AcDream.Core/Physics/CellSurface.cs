@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Dat;
+using AcDream.Core.Physics.Surfaces;
 
 namespace AcDream.Core.Physics;
 
@@ -122,7 +123,7 @@ public sealed partial class CellSurface
     /// <summary>Its portals' bounds seen from above, packed (<see cref="WallExtent.Pack"/>), in its portals' order.</summary>
     internal System.Runtime.Intrinsics.Vector128<float>[] PortalExtents { get; }
 
-    /// <summary>Where its floor is open to a body (<see cref="Physics.OpenFloor"/>), with the objects standing in it; null without a floor.</summary>
+    /// <summary>Where its floor is open to a body (<see cref="OpenFloor"/>), with the objects standing in it; null without a floor.</summary>
     internal OpenFloor? OpenFloor { get; }
 
     /// <summary>Whether the cell has any walkable floor (a stairwell shaft has none).</summary>

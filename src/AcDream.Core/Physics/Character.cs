@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics;
 

@@ -1,5 +1,7 @@
 using System.Numerics;
 using AcDream.Core.Dat;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.Point;
 
 namespace AcDream.Core.Physics;
 

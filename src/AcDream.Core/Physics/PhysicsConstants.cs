@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Surfaces;
 namespace AcDream.Core.Physics;
 
 /// <summary>

@@ -1,6 +1,9 @@
 using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Casting;
 
 namespace AcDream.Core.Physics;
 
@@ -47,55 +50,60 @@ public sealed partial class PhysicsEngine
     /// <param name="request">Where it starts (world metres), its cell (<c>0xXXYYCCCC</c>; an outdoor number, 0 included, is recomputed from the position), the centre's displacement, the radius (metres, 0 to <see cref="PhysicsConstants.MaxCastRadius"/>), filters and the mover it ignores. The start's cell is not always the cell <c>Resolve</c> names for a mover whose start is above its feet: a body in the air over a floor opening is in the cell below, a pivot over its head may be in the cell above; find it with <see cref="FindCell"/>.</param>
     /// <exception cref="ArgumentOutOfRangeException">The radius is more than <see cref="PhysicsConstants.MaxCastRadius"/> (named <c>request</c>).</exception>
     /// <exception cref="ArgumentException">A position or the delta is not finite (or the end overflows), the radius is negative or not finite, the cell id is not a cell of the world, or an indoor cell is not in its loaded landblock; each named <c>request</c>, with the field.</exception>
+    [MethodImpl(MethodImplOptions.NoInlining)] // the preamble compiled once here, not into each caller
     public CastHit Cast(in CastRequest request)
     {
-        CastHit hit = CastAnswer(in request);
+        CastHit hit = Query<Casting, CastHit>(new Casting(in request));
         _recorder?.Cast(in request, in hit);
         return hit;
     }
 
-    /// <summary>The cast's answer (the public call's, before its recorder sees it).</summary>
-    private CastHit CastAnswer(in CastRequest request)
+    /// <summary>
+    /// The cast's own part: checked, the movers near its path held (<see cref="Neighbourhood.MeetAlong"/>), then its walk
+    /// from the start's cell; a start whose land is not loaded is stopped where it is.
+    /// </summary>
+    private readonly ref struct Casting(ref readonly CastRequest request) : IQueryBody<CastHit>
     {
-        Vector3 from = request.From, to = from + request.Delta;
-        uint fromCellId = request.FromCellId;
-        CastOptions options = request.Options;
-        if (!(Geometry.IsFinite(from) && Geometry.IsFinite(to) && options.Radius >= 0f && options.Radius <= PhysicsConstants.MaxCastRadius && MoveQuery.IsCellOfTheWorld(fromCellId)))
+        private readonly ref readonly CastRequest _request = ref request;
+
+        public void Validate()
         {
-            ThrowInvalidCast(in request);
+            ref readonly CastRequest r = ref _request;
+            Vector3 from = r.From, to = from + r.Delta;
+            CastOptions options = r.Options;
+            if (!(Geometry.IsFinite(from) && Geometry.IsFinite(to) && options.Radius >= 0f && options.Radius <= PhysicsConstants.MaxCastRadius && CellIds.IsCellOfTheWorld(r.FromCellId)))
+            {
+                ThrowInvalidCast(in r);
+            }
         }
 
-        var lands = new Neighbourhood(_registry);
-        if (!Locator.TryFind(_frame, ref lands, from, fromCellId, out Place start, nameof(request)))
+        public void Begin(PhysicsEngine engine)
         {
-            // The land under the start is not loaded: stopped where it is, in its cell (an outdoor one found from the position).
-            Vector3 back = from == to ? Vector3.Zero : Vector3.Normalize(from - to);
-            _frame.Locate(from, fromCellId, out int x, out int y, out Vector2 local);
-            uint cell = CellIds.IsIndoor(fromCellId) ? fromCellId : WorldFrame.OutdoorCellId(x, y, local);
-            return new CastHit(true, 0f, from, from - (back * options.Radius), back, SurfaceKind.None, 0, cell);
         }
 
-        Vector3 move = to - from;
-        float reach = MathF.Abs(move.X) + MathF.Abs(move.Y) + options.Radius + PhysicsConstants.TouchReach;
-        if (_movers.Any && lands.MeetAlong(_movers, in _frame, from, fromCellId, reach, request.MoverId))
+        public bool Meet(ref Neighbourhood lands, MoverRegistry movers, in WorldFrame frame)
         {
-            return HeldCast(ref lands, in start, from, to, in options);
+            ref readonly CastRequest r = ref _request;
+            Vector3 move = (r.From + r.Delta) - r.From;
+            float reach = MathF.Abs(move.X) + MathF.Abs(move.Y) + r.Options.Radius + PhysicsConstants.TouchReach;
+            return lands.MeetAlong(movers, in frame, r.From, r.FromCellId, reach, r.MoverId);
         }
 
-        return WorldCast.Run(in _frame, ref lands, in start, from, to, in options);
-    }
+        public CastHit Run(PhysicsEngine engine, ref Neighbourhood lands, bool held)
+        {
+            ref readonly CastRequest r = ref _request;
+            Vector3 from = r.From, to = from + r.Delta;
+            CastOptions options = r.Options;
+            if (!Locator.TryFind(engine._frame, ref lands, from, r.FromCellId, out Place start, nameof(request)))
+            {
+                // The land under the start is not loaded: stopped where it is, in its cell (an outdoor one found from the position).
+                Vector3 back = from == to ? Vector3.Zero : Vector3.Normalize(from - to);
+                engine._frame.Locate(from, r.FromCellId, out int x, out int y, out Vector2 local);
+                uint cell = CellIds.IsIndoor(r.FromCellId) ? r.FromCellId : WorldFrame.OutdoorCellId(x, y, local);
+                return new CastHit(true, 0f, from, from - (back * options.Radius), back, SurfaceKind.None, 0, cell);
+            }
 
-    /// <summary>A cast with movers held: its walk, and the hold let go whatever happens.</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private CastHit HeldCast(ref Neighbourhood lands, in Place start, Vector3 from, Vector3 to, in CastOptions options)
-    {
-        try
-        {
-            return WorldCast.Run(in _frame, ref lands, in start, from, to, in options);
-        }
-        finally
-        {
-            lands.Release();
+            return WorldCast.Run(in engine._frame, ref lands, in start, from, to, in options);
         }
     }
 

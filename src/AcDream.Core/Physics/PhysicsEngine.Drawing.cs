@@ -1,5 +1,9 @@
 using System.Numerics;
 using AcDream.Core.Physics.Drawing;
+using AcDream.Core.Physics.Movers;
+using AcDream.Core.Physics.Point;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics;
 
@@ -49,7 +53,7 @@ public sealed partial class PhysicsEngine
             throw new ArgumentException($"position {position} (cell 0x{cellId:X8}) must be finite.", nameof(position));
         }
 
-        if (!MoveQuery.IsCellOfTheWorld(cellId))
+        if (!CellIds.IsCellOfTheWorld(cellId))
         {
             throw new ArgumentException($"cellId 0x{cellId:X8} is not a cell of the world (0x0000..0x0040 outdoors, 0x0100..0xFFFD indoors, landblock X and Y below 0xFF).", nameof(cellId));
         }

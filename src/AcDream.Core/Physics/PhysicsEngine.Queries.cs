@@ -1,4 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Point;
 
 namespace AcDream.Core.Physics;
 
@@ -107,7 +110,7 @@ public sealed partial class PhysicsEngine
             throw new ArgumentException($"position {position} (hint 0x{hintCellId:X8}) must be finite.", nameof(position));
         }
 
-        if (!MoveQuery.IsCellOfTheWorld(hintCellId))
+        if (!CellIds.IsCellOfTheWorld(hintCellId))
         {
             throw new ArgumentException($"hintCellId 0x{hintCellId:X8} is not a cell of the world (0x0000..0x0040 outdoors, 0x0100..0xFFFD indoors, landblock X and Y below 0xFF).", nameof(hintCellId));
         }

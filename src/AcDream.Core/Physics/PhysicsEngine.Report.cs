@@ -1,5 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Point;
+using AcDream.Core.Physics.Body;
 
 namespace AcDream.Core.Physics;
 
@@ -28,46 +32,58 @@ public sealed partial class PhysicsEngine
     /// <param name="request">The move: position (world metres), cell, delta, step, options, mover id, whether to report.</param>
     /// <param name="touched">Where to write the ids of the movers touched; empty (the default): touches are not looked for, and the count is 0.</param>
     /// <exception cref="ArgumentException">As the four-argument call, named <c>request</c> with the field.</exception>
+    [MethodImpl(MethodImplOptions.NoInlining)] // the preamble compiled once here, not into each caller
 #pragma warning disable RS0027 // (the spec's four-argument Resolve has no optional parameter to clash with; one general call reads best with the span optional)
     public MoveResult Resolve(in MoveRequest request, Span<uint> touched = default)
 #pragma warning restore RS0027
     {
-        MoveResult result = Answer(in request, touched);
+        MoveResult result = Query<Requested, MoveResult>(new Requested(in request, touched));
         _recorder?.Resolved(in request, touched, in result);
         return result;
     }
 
-    /// <summary>The general move's answer (the public call's, before its recorder sees it).</summary>
-    private MoveResult Answer(in MoveRequest request, Span<uint> touched)
+    /// <summary>The general call's own part: its move, what it met when asked, and the movers it touched.</summary>
+    private ref struct Requested : IQueryBody<MoveResult>
     {
-        MoveQuery.Validate(in request);
-        MovementOptions options = request.Options;
-        var lands = new Neighbourhood(_registry);
-        long commit = _movers.CommitNumber;
-        if (!(_movers.Any && lands.Meet(_movers, in _frame, request.Position, request.CellId, MoverReach(request.Delta, in options), request.MoverId)))
+        private readonly ref readonly MoveRequest _request;
+        private readonly Span<uint> _touched;
+        private long _commit;
+
+        public Requested(in MoveRequest request, Span<uint> touched)
         {
-            return request.WithReport
-                ? new MoveResult(Reported(ref lands, in request, out MoveReport report), report, 0, commit)
-                : new MoveResult(Moved(ref lands, in request), default, 0, commit);
+            _request = ref request;
+            _touched = touched;
         }
 
-        try
+        public readonly void Validate() => MoveQuery.Validate(in _request);
+
+        public void Begin(PhysicsEngine engine) => _commit = engine._movers.CommitNumber;
+
+        public readonly bool Meet(ref Neighbourhood lands, MoverRegistry movers, in WorldFrame frame)
         {
-            commit = lands.Movers!.Commit;
-            if (touched.IsEmpty && !request.WithReport)
+            MovementOptions options = _request.Options;
+            return lands.Meet(movers, in frame, _request.Position, _request.CellId, MoverReach(_request.Delta, in options), _request.MoverId);
+        }
+
+        public readonly MoveResult Run(PhysicsEngine engine, ref Neighbourhood lands, bool held)
+        {
+            ref readonly MoveRequest request = ref _request;
+            if (!held)
             {
-                return new MoveResult(Moved(ref lands, in request), default, 0, commit);
+                return request.WithReport
+                    ? new MoveResult(engine.Reported(ref lands, in request, out MoveReport report), report, 0, _commit)
+                    : new MoveResult(engine.Moved(ref lands, in request), default, 0, _commit);
             }
 
-            ResolveResult result = Reported(ref lands, in request, out MoveReport report);
-            int count = Touches.Along(
-                _frame, ref lands, request.Position, request.CellId, in result, request.StepUpHeight, options.Body,
-                report.Wall.Kind == SurfaceKind.Mover ? report.Wall.Id : 0, touched);
-            return new MoveResult(result, request.WithReport ? report : default, count, commit);
-        }
-        finally
-        {
-            lands.Release();
+            long commit = lands.Movers!.Commit;
+            if (_touched.IsEmpty && !request.WithReport)
+            {
+                return new MoveResult(engine.Moved(ref lands, in request), default, 0, commit);
+            }
+
+            ResolveResult result = engine.Reported(ref lands, in request, out MoveReport met);
+            int count = Touches.Along(engine._frame, ref lands, in request, in result, met.Wall.Kind == SurfaceKind.Mover ? met.Wall.Id : 0, _touched);
+            return new MoveResult(result, request.WithReport ? met : default, count, commit);
         }
     }
 

@@ -1,5 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Point;
+using AcDream.Core.Physics.Body;
 
 namespace AcDream.Core.Physics;
 
@@ -69,7 +73,7 @@ public sealed partial class PhysicsEngine
         _point = new PointMover(new OutdoorResolver(frame, portals), new IndoorResolver(frame, portals));
         _planner = new BodyPlanner(frame);
         _motion = new BodyMotion(frame, _point, new BodyResolver(_planner, frame, _point), _planner);
-        _movers = new MoverRegistry(frame);
+        _movers = new MoverRegistry(frame, MoverSolid.StandsIn);
     }
 
     /// <summary>
@@ -173,23 +177,13 @@ public sealed partial class PhysicsEngine
     /// <param name="delta">The intended move, world metres.</param>
     /// <param name="stepUpHeight">Highest rise one move may climb, metres, ≥ 0.</param>
     /// <exception cref="ArgumentException">An argument is NaN or infinite, the step height is negative, the cell number is not a cell (0x0041..0x00FF, 0xFFFE, 0xFFFF), the id's landblock X or Y is off the world (0xFF), or an indoor cell is not in its registered landblock.</exception>
+    [MethodImpl(MethodImplOptions.NoInlining)] // the preamble compiled once here, not into each caller
     public ResolveResult Resolve(
         Vector3 currentPos,
         uint currentCellId,
         Vector3 delta,
         float stepUpHeight)
-    {
-        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        MovementOptions none = default; // no effects: the spec's engine
-        var lands = new Neighbourhood(_registry);
-        if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in none), 0))
-        {
-            return Held(ref lands, currentPos, currentCellId, delta, stepUpHeight, in none, literal: true);
-        }
-
-        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in none);
-        return _point.Step(ref query);
-    }
+        => Query<Literal, ResolveResult>(new Literal(currentPos, currentCellId, delta, stepUpHeight));
 
     /// <summary>
     /// <see cref="Resolve(Vector3, uint, Vector3, float)"/> with opt-in effects beyond the spec. With
@@ -212,85 +206,7 @@ public sealed partial class PhysicsEngine
         Vector3 delta,
         float stepUpHeight,
         in MovementOptions options)
-        => Moved(currentPos, currentCellId, delta, stepUpHeight, in options, 0);
-
-    /// <summary>
-    /// The call with options, as the mover <paramref name="self"/> (0: none): checked, the movers near held when there
-    /// are any (<see cref="Held"/>), else the move itself. Inlined into both public calls, which are one code.
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private ResolveResult Moved(Vector3 currentPos, uint currentCellId, Vector3 delta, float stepUpHeight, in MovementOptions options, uint self)
-    {
-        MoveQuery.Validate(currentPos, currentCellId, delta, stepUpHeight);
-        var lands = new Neighbourhood(_registry);
-        if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), self))
-        {
-            return Held(ref lands, currentPos, currentCellId, delta, stepUpHeight, in options, literal: false);
-        }
-
-        var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
-        return Move(ref query, in options, delta.Z);
-    }
-
-    /// <summary>A call that holds movers (<see cref="Neighbourhood.Meet"/>): its move, and the hold let go whatever happens.</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // kept out of Resolve: a call with no mover near has no handler to set up
-    private ResolveResult Held(ref Neighbourhood lands, Vector3 position, uint cellId, Vector3 delta, float stepUp, in MovementOptions options, bool literal)
-    {
-        try
-        {
-            var query = new MoveQuery(ref lands, position, cellId, new Vector2(delta.X, delta.Y), stepUp, in options);
-            return literal ? _point.Checked(ref query, _point.Step(ref query)) : Move(ref query, in options, delta.Z);
-        }
-        finally
-        {
-            lands.Release();
-        }
-    }
-
-    /// <summary>
-    /// How far from its start a call's queries of the movers reach (metres, seen from above): its move (|x| + |y|, at least
-    /// its length), with vertical motion also its |z| (a fall stopped by a steep face or a creature's top slides off
-    /// sideways by at most half the fall it stopped), and its body's radius (every box a call asks about lies within
-    /// them of its start: its path, the slides along it, the rise, the fall and the touches), and 5 cm for the skin, the
-    /// contact tolerance and the world frame's rounding.
-    /// </summary>
-    private static float MoverReach(Vector3 delta, in MovementOptions options) =>
-        MathF.Abs(delta.X) + MathF.Abs(delta.Y) + (options.MovesVertically ? MathF.Abs(delta.Z) : 0f)
-        + (options.Body is MoverBody body ? body.Radius : 0f) + 0.05f;
-
-    /// <summary>
-    /// The move of a checked call: a body's in three dimensions when an effect asks (<see cref="BodyMotion"/>, with the
-    /// delta's Z <paramref name="dz"/>), else across the ground (<see cref="BodyMotion.Horizontal"/>).
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private ResolveResult Move(ref MoveQuery query, in MovementOptions options, float dz) =>
-        options.InThreeD ? _motion.Resolve(ref query, dz) : _motion.Horizontal(ref query);
-
-    /// <summary>Tests' seam: whether a body's move needs no plan (<see cref="BodyPlanner.IsOpenGround"/>), as <c>Resolve</c> asks it.</summary>
-    internal bool IsOpenGround(Vector3 position, uint cellId, Vector2 move, MoverBody body)
-    {
-        var lands = new Neighbourhood(_registry); // (the movers are not read here)
-        MovementOptions options = new() { Body = body };
-        var query = new MoveQuery(ref lands, position, cellId, move, 0f, in options);
-        return _planner.IsOpenGround(ref query, move, body);
-    }
-
-    /// <summary>Tests' seam: a body's move always planned (<see cref="BodyResolver.Resolve"/>), never the open-ground shortcut.</summary>
-    internal ResolveResult ResolvePlanned(Vector3 position, uint cellId, Vector2 move, float stepUpHeight, in MovementOptions options)
-    {
-        var lands = new Neighbourhood(_registry); // (the movers are not read here)
-        var query = new MoveQuery(ref lands, position, cellId, move, stepUpHeight, in options);
-        return _motion.Planned(ref query);
-    }
-
-    /// <summary>Tests' seam: how far a body overlaps the walls of its band beyond its sink (<see cref="BodyPlanner.Overlap"/>), metres.</summary>
-    internal float BodyOverlap(Vector3 position, uint cellId, float stepUpHeight, MoverBody body)
-    {
-        var lands = new Neighbourhood(_registry); // (the movers are not read here)
-        MovementOptions options = new() { Body = body };
-        var query = new MoveQuery(ref lands, position, cellId, Vector2.Zero, stepUpHeight, in options);
-        return _planner.Overlap(ref query, position, cellId, body, out _);
-    }
+        => Query<Optioned, ResolveResult>(new Optioned(currentPos, currentCellId, delta, stepUpHeight, in options, 0));
 
     private static (int X, int Y) CheckedCentre(uint centerLandblockId)
     {

@@ -1,8 +1,10 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using AcDream.Core.Physics.Drawing;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Point;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 /// <summary>
 /// A body's move in three dimensions (<see cref="MovementOptions.Vertical"/>, <see cref="MovementOptions.Footing"/>,

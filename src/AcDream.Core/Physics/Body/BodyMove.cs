@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 /// <summary>
 /// One sweep of a body among walls: a disc of contact radius <see cref="Radius"/> whose centre moves from

@@ -1,9 +1,11 @@
 using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using AcDream.Core.Physics.Drawing;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Point;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 /// <summary>
 /// Plans a body's move: finds the landblock frame the mover is in, and slides the body among the walls

@@ -1,8 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using AcDream.Core.Physics.Drawing;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.Point;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 /// <summary>
 /// The body effect's move: the path <see cref="BodyPlanner"/> plans among the walls, walked leg by

@@ -1,8 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 // BodySweep, against walls: a cell's walls and an object's polygons, cut to the move's height band.
 internal static partial class BodySweep

@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.Movers;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 /// <summary>
 /// A mover's walls as a solid: its upright plane walls that meet a body's band, seen from above, are the outline of
@@ -22,6 +24,19 @@ internal static class MoverSolid
     /// of a float spacing; the sink is at least one), and a move already lifted is not met again.
     /// </summary>
     private const float Leaving = 0.75f;
+
+    /// <summary>
+    /// Whether a mover's cylinder (<paramref name="cylinder"/>, its frame <paramref name="offset"/> from the door's) held
+    /// still overlaps the door's walls or stands inside them (<see cref="Sweep"/> of a disc of its radius that does not move):
+    /// the registry's <see cref="StandsInDoor"/>, asked of a closing door at a commit.
+    /// </summary>
+    public static bool StandsIn(CellWalls door, in WallPolygon cylinder, Vector2 offset)
+    {
+        var still = new BodyMove(cylinder.A + offset, Vector2.Zero, cylinder.Radius, cylinder.Radius, 0f, cylinder.ZMin, cylinder.ZMax);
+        var hit = WallHit.None;
+        Sweep(door, Vector2.Zero, still.P - new Vector2(cylinder.Radius), still.P + new Vector2(cylinder.Radius), in still, ref hit); // (its faces, or wholly inside the slab)
+        return hit.Depth > 0f;
+    }
 
     /// <summary>
     /// Sweeps <paramref name="move"/> against one mover's walls (their landblock frame <paramref name="offset"/> from the

@@ -1,8 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 /// <summary>
 /// What a rising body's top meets: the lowest point of any wall polygon, cylinder or floor (seen from below) over

@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 /// <summary>
 /// The floors under a body's footprint (<see cref="MovementOptions.Footing"/>): every cell's or object's floor triangle

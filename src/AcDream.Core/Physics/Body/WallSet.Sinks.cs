@@ -1,7 +1,10 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Movers;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 // WallSet, what its sources are handed to: a lister of the sources, a sweeper of walls and a riser into ceilings.
 internal ref partial struct WallSet

@@ -1,7 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 // WallSet, its sources: the cells, objects and movers within the box, in the mover's landblock and its neighbours'.
 internal ref partial struct WallSet

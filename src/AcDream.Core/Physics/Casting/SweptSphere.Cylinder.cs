@@ -1,4 +1,5 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Surfaces;
+namespace AcDream.Core.Physics.Casting;
 
 // SweptSphere against a cylinder: its side, its caps and (for a sphere) its rims, the rims' quartic solved by its roots.
 internal partial struct SweptSphere

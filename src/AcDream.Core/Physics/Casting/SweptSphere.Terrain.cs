@@ -1,4 +1,5 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Surfaces;
+namespace AcDream.Core.Physics.Casting;
 
 // SweptSphere against the terrain: a cell's bilinear patch, swept in closed form.
 internal partial struct SweptSphere

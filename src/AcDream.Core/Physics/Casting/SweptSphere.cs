@@ -1,7 +1,8 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Casting;
 
 /// <summary>
 /// A sphere swept along a segment, and the earliest contact found so far: every shape a cast meets is tested here, in

@@ -1,7 +1,8 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Casting;
 
 // WorldCast, the shapes a piece tests: a cell's walls, floors and objects; an object's; walls and floor triangles.
 internal static partial class WorldCast

@@ -1,6 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Movers;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Casting;
 
 // WorldCast's walk, what a piece meets: things outdoors, the terrain, the movers near and the doorways over the path.
 internal static partial class WorldCast

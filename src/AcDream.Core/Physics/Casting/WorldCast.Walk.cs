@@ -1,7 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Casting;
 
 // WorldCast's walk: the pieces of the path, in a cell through its portals and outdoors cell by cell.
 internal static partial class WorldCast

@@ -1,7 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Casting;
 
 /// <summary>
 /// A cast through the world (<see cref="PhysicsEngine.Cast"/>): the sphere's centre followed piece by piece, in a cell

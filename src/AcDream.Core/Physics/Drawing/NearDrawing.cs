@@ -1,4 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Movers;
+using AcDream.Core.Physics.Point;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Drawing;
 

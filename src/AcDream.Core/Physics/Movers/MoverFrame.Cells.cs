@@ -1,7 +1,7 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Movers;
 
 /// <summary>
 /// The outdoor cells (24 m, counted across the world) that have a mover filed in one of their 12 × 12 squares, and which

@@ -1,7 +1,8 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Movers;
 
 /// <summary>
 /// One whole state of the registered movers, as a call reads it: each mover's id, state, landblock and walls placed in

@@ -1,4 +1,6 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.Movers;
 
 namespace AcDream.Core.Physics;
 
@@ -158,13 +160,13 @@ public sealed partial class MoverRegistry
         }
     }
 
-    /// <summary>Doors told to close become solid once no other mover's cylinder overlaps their walls or stands inside them (<see cref="MoverSolid"/>) in the state about to be published.</summary>
+    /// <summary>Doors told to close become solid once no other mover's cylinder overlaps their walls or stands inside them (<see cref="StandsInDoor"/>) in the state about to be published.</summary>
     private void HoldDoors(MoverFrame f)
     {
         for (int i = 0; i < f.Count; i++)
         {
             ref Slot door = ref _movers[i];
-            if (!door.Closing || Overlapped(f, i))
+            if (!door.Closing || Overlapped(f, i, _standsIn))
             {
                 continue;
             }
@@ -174,7 +176,7 @@ public sealed partial class MoverRegistry
         }
     }
 
-    private static bool Overlapped(MoverFrame f, int door)
+    private static bool Overlapped(MoverFrame f, int door, StandsInDoor standsIn)
     {
         CellWalls walls = f.Walls[door];
         int x = f.LandblockX[door], y = f.LandblockY[door];
@@ -188,15 +190,9 @@ public sealed partial class MoverRegistry
 
             foreach (WallPolygon c in f.Walls[j].Polygons)
             {
-                if (c.Radius > 0f)
+                if (c.Radius > 0f && standsIn(walls, in c, offset))
                 {
-                    var still = new BodyMove(c.A + offset, Vector2.Zero, c.Radius, c.Radius, 0f, c.ZMin, c.ZMax);
-                    var hit = WallHit.None;
-                    MoverSolid.Sweep(walls, Vector2.Zero, still.P - new Vector2(c.Radius), still.P + new Vector2(c.Radius), in still, ref hit); // (its faces, or wholly inside the slab)
-                    if (hit.Depth > 0f)
-                    {
-                        return true;
-                    }
+                    return true;
                 }
             }
         }

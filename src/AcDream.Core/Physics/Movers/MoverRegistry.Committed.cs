@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Movers;
 namespace AcDream.Core.Physics;
 
 /// <summary>What the last commit published: its number, and each door's state as moves meet it.</summary>

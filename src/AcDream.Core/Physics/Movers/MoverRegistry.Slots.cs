@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
 
 namespace AcDream.Core.Physics;
 
@@ -12,7 +13,7 @@ public sealed partial class MoverRegistry
             throw new ArgumentException($"mover 0x{id:X8}: position {position} must be finite.", nameof(position));
         }
 
-        if (!MoveQuery.IsCellOfTheWorld(cellId))
+        if (!CellIds.IsCellOfTheWorld(cellId))
         {
             throw new ArgumentException($"mover 0x{id:X8}: cellId 0x{cellId:X8} is not a cell of the world (outdoor 0x0001..0x0040, indoor 0x0100..0xFFFD).", nameof(cellId));
         }

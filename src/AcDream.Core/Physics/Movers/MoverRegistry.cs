@@ -1,4 +1,6 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.Movers;
 
 namespace AcDream.Core.Physics;
 
@@ -23,6 +25,7 @@ namespace AcDream.Core.Physics;
 public sealed partial class MoverRegistry
 {
     private readonly WorldFrame _frame;
+    private readonly StandsInDoor _standsIn;
     private readonly object _write = new();
     private readonly Dictionary<uint, int> _slots = [];
     private readonly List<MoverFrame> _spare = [];
@@ -35,7 +38,8 @@ public sealed partial class MoverRegistry
     /// <summary>The engine's recorder (<see cref="PhysicsEngine.Recorder"/>), told every change inside the lock; null: none.</summary>
     internal IEngineRecorder? Recorder;
 
-    internal MoverRegistry(WorldFrame frame) => _frame = frame;
+    /// <summary>A registry placing movers in <paramref name="frame"/>, a closing door held open while <paramref name="standsIn"/> says a mover stands in it.</summary>
+    internal MoverRegistry(WorldFrame frame, StandsInDoor standsIn) => (_frame, _standsIn) = (frame, standsIn);
 
     /// <summary>How many movers are registered (committed or not).</summary>
     public int Count

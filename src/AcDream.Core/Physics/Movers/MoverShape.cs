@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Dat;
+using AcDream.Core.Physics.Surfaces;
 
 namespace AcDream.Core.Physics;
 

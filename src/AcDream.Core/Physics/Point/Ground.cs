@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Point;
 
 /// <summary>
 /// The one ground probe of the host's questions: what a mover with its feet at a place stands on, as the

@@ -1,8 +1,10 @@
 using System.Numerics;
 using System.Diagnostics.CodeAnalysis;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Point;
 
 /// <summary>
 /// One move's state, as one value through the resolvers: what the caller asked (position, cell,
@@ -134,7 +136,7 @@ internal ref struct MoveQuery
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static void Validate(Vector3 pos, uint cellId, Vector3 delta, float stepUp)
     {
-        if (!(Geometry.IsFinite(pos) && Geometry.IsFinite(delta) && float.IsFinite(stepUp) && stepUp >= 0f && IsCellOfTheWorld(cellId)))
+        if (!(Geometry.IsFinite(pos) && Geometry.IsFinite(delta) && float.IsFinite(stepUp) && stepUp >= 0f && CellIds.IsCellOfTheWorld(cellId)))
         {
             ThrowInvalid(pos, cellId, delta, stepUp, Spec);
         }
@@ -144,7 +146,7 @@ internal ref struct MoveQuery
     public static void Validate(in MoveRequest request)
     {
         if (!(Geometry.IsFinite(request.Position) && Geometry.IsFinite(request.Delta) && float.IsFinite(request.StepUpHeight)
-              && request.StepUpHeight >= 0f && IsCellOfTheWorld(request.CellId)))
+              && request.StepUpHeight >= 0f && CellIds.IsCellOfTheWorld(request.CellId)))
         {
             ThrowInvalid(request.Position, request.CellId, request.Delta, request.StepUpHeight, Request);
         }
@@ -155,14 +157,6 @@ internal ref struct MoveQuery
 
     /// <summary>How a request's fields are named; its <c>paramName</c> is <c>request</c>.</summary>
     private static readonly string[] Request = ["request.Position", "request.CellId", "request.Delta", "request.StepUpHeight"];
-
-
-    internal static bool IsCellOfTheWorld(uint cellId)
-    {
-        uint low = cellId & 0xFFFF;
-        return !((low > PhysicsConstants.CellsPerSide * PhysicsConstants.CellsPerSide && low < CellIds.FirstIndoor) || low > CellIds.LastIndoor)
-            && CellIds.IsInWorld(CellIds.LandblockX(cellId), CellIds.LandblockY(cellId));
-    }
 
     /// <summary>The exception for the first argument <c>Validate</c> finds wrong.</summary>
     [DoesNotReturn]

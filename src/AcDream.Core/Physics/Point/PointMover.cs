@@ -1,8 +1,10 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using AcDream.Core.Physics.Drawing;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Movers;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Point;
 
 /// <summary>
 /// A point mover's move: one end-point checked step (<see cref="OutdoorResolver"/> or

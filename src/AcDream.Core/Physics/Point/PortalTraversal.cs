@@ -1,7 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Point;
 
 /// <summary>
 /// Indoor portal traversal: where a move from p0 to p1 that starts in a cell ends, following the

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Point;
 
 /// <summary>
 /// A point move's step line: the segment <see cref="P0"/> → <see cref="P1"/> seen from above at height

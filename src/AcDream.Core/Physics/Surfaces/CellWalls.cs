@@ -1,7 +1,7 @@
 using System.Numerics;
 using System.Runtime.Intrinsics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Surfaces;
 
 /// <summary>
 /// One wall of a cell for the body: a physics polygon that is not a floor, landblock-local, with

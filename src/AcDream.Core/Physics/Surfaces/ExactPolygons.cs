@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Surfaces;
 
 /// <summary>
 /// An object's polygons as a cast meets them: the same walls and floor triangles the movers meet, but each vertex placed

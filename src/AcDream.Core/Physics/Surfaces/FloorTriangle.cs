@@ -1,7 +1,7 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Surfaces;
 
 /// <summary>
 /// One walkable triangle, prepared at construction so a query is arithmetic only: landblock-local

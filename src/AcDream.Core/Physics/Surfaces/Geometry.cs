@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Surfaces;
 
 /// <summary>Small geometric helpers shared by the surfaces. Allocation-free.</summary>
 internal static class Geometry

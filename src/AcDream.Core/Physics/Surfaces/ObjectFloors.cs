@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Surfaces;
 
 /// <summary>
 /// Where a mover comes to rest among the floors of a list of objects (those standing in one cell), at a

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Surfaces;
 
 /// <summary>
 /// Where a cell's floor is open, built with the cell (and again with the objects placed in it): squares of <see cref="PhysicsConstants.OpenFloorSquare"/>

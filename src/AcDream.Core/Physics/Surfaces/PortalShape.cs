@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Surfaces;
 
 /// <summary>
 /// A portal polygon prepared for crossing tests, in landblock-local metres. A doorway (vertical)

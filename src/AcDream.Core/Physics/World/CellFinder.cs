@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// Which cell holds a point (<see cref="PhysicsEngine.FindCell"/>): among the indoor cells reached through portals from

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// Builds the immutable <see cref="LandblockEntry"/> of a landblock from its terrain, cells and objects,

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// Everything the engine holds for one registered landblock, with the lookups Resolve needs

@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// The registered landblocks, one slot per landblock of the world. Readers (any number of threads

@@ -1,8 +1,9 @@
 using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>Where a mover is: its landblock's entry and indices, its landblock-local XY, and its cell's index (−1 outdoors).</summary>
 internal readonly struct Place(LandblockEntry entry, int x, int y, Vector2 local, int cellIndex)

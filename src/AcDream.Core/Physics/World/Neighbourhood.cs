@@ -1,7 +1,9 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.Movers;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// The landblocks one <c>Resolve</c> (or host query) reads, each read from the registry at most once:
@@ -50,7 +52,7 @@ internal partial struct Neighbourhood
 
     /// <summary>
     /// Whether the caller asked what the move met: then the kind and id of the wall, shell, cylinder or mover that stops
-    /// or slides the move are recorded in <see cref="MetKind"/> and <see cref="MetId"/> (<see cref="MoveQuery.Meet(SurfaceKind, uint)"/>;
+    /// or slides the move are recorded in <see cref="MetKind"/> and <see cref="MetId"/> (<c>MoveQuery.Meet</c>;
     /// the answer gives the normal); otherwise nothing is written.
     /// </summary>
     public bool Reporting;

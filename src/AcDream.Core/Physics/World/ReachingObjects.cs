@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>An object standing in another cell that reaches into a cell's space: the index of the cell it stands in, and the object.</summary>
 internal readonly record struct ReachingObject(int Cell, ObjectSurface Object);

@@ -1,7 +1,7 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
-namespace AcDream.Core.Physics.Drawing;
+namespace AcDream.Core.Physics.Surfaces;
 
 /// <summary>
 /// What a move saw, drawn while it is decided: the sink of the thread's <see cref="PhysicsEngine.DrawMove"/> call, read only

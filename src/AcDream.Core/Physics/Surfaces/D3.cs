@@ -1,7 +1,7 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Surfaces;
 
 /// <summary>A point or direction in double precision, metres; only what a cast's arithmetic needs.</summary>
 internal readonly record struct D3(double X, double Y, double Z)

@@ -1,6 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Physics.Surfaces;
+using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Movers;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Body;
 
 /// <summary>The movers a call's move touched, blocking or not, for the caller that asks (a pass after the move).</summary>
 internal static class Touches
@@ -11,14 +14,15 @@ internal static class Touches
     /// <summary>
     /// Writes into <paramref name="touched"/> the ids of the movers met (not the mover itself, not one both Ethereal and
     /// IgnoreCollisions) whose walls the disc of the body (or a point) grown by <see cref="PhysicsConstants.TouchReach"/>
-    /// meets on the straight line from <paramref name="start"/> to the answer, over the height from the lower feet to the
+    /// meets on the straight line from the request's start to the answer, over the height from the lower feet to the
     /// higher head (a point: to its step up), and <paramref name="stoppedBy"/> (a point's sub-step refused before the
     /// mover it would cross stops short of it); how many there are. They are written in the order the line first touches
     /// them (one it overlaps at its start first, the one that stopped it short last; equal fractions in the order the
     /// committed state files them), the first that fit: the first <see cref="MaxWritten"/> in that order, any after them in the order the state files them.
     /// </summary>
-    public static int Along(WorldFrame frame, ref Neighbourhood lands, Vector3 start, uint cellId, in ResolveResult result, float stepUp, MoverBody? body, uint stoppedBy, Span<uint> touched)
+    public static int Along(WorldFrame frame, ref Neighbourhood lands, in MoveRequest request, in ResolveResult result, uint stoppedBy, Span<uint> touched)
     {
+        (Vector3 start, uint cellId, float stepUp, MoverBody? body) = (request.Position, request.CellId, request.StepUpHeight, request.Options.Body);
         MoverFrame movers = lands.Movers!;
         frame.Locate(start, cellId, out int x, out int y, out Vector2 p0);
         Vector2 p1 = new Vector2(result.Position.X, result.Position.Y) - frame.Origin(x, y);
