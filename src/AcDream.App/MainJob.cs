@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Text;
 using System.Xml;
 using System.Xml.Linq;
+using AcDream.App.Capture;
 using AcDream.App.Scenes;
 using AcDream.App.World;
 
@@ -9,9 +10,10 @@ namespace AcDream.App;
 
 /// <summary>
 /// The main job: runs a scene (the embedded Holtburg walk by default), prints the summary and writes
-/// the SVG and the page beside it (<see cref="WalkPage"/>). Exit status 0 on success, 2 on a bad option or
-/// scene file, 1 when the SVG or the page cannot be written. Each is written to a temporary file and renamed
-/// over the old one, so a failure never leaves a damaged file.
+/// the SVG and the page beside it (<see cref="WalkPage"/>), and with <c>--capture</c> the engine's calls (<c>replay FILE</c>
+/// replays them). Exit status 0 on success, 2 on a bad option or scene file, 1 when the SVG, the page or the capture
+/// cannot be written. The SVG and the page are each written to a temporary file and renamed over the old one, so a
+/// failure never leaves a damaged file.
 /// </summary>
 internal static class MainJob
 {
@@ -21,6 +23,7 @@ internal static class MainJob
     /// <summary>Usage text for <c>--help</c>.</summary>
     public const string Usage = """
         Usage: dotnet run --project src/AcDream.App -- [options]
+               dotnet run --project src/AcDream.App -- replay FILE
 
         Runs a scripted walk through the physics engine, headless, and prints what happened:
         the cells visited, moves slid along walls and refused, where a chase camera's boom
@@ -34,16 +37,29 @@ internal static class MainJob
                          embedded Holtburg walk
           --out DIR      folder for the SVG and the page (default: out)
           --frames N     stop after N frames (30 frames = 1 s)
+          --capture FILE also record every call of the engine and its answer into
+                         FILE (JSON Lines, see docs/capture.md; gzip if FILE ends in .gz)
           --quiet        print only the SVG path
           --help         print this text
 
-        Exit status: 0 done, 1 the SVG or the page could not be written, 2 a bad option or scene file.
+        Exit status: 0 done, 1 the SVG, the page or the capture could not be written, 2 a bad
+        option or scene file.
+
+        replay FILE      replays a capture against a fresh engine in the scene's world and
+                         compares every answer bit for bit: exit status 0 all the same,
+                         1 the first line whose answer differs (both answers and the call's
+                         inputs printed), 2 a bad file (its line and field named).
         """;
 
     /// <summary>Runs the job with command-line <paramref name="args"/>; returns the exit status.</summary>
     public static int Run(string[] args, TextWriter output, TextWriter error)
     {
-        string? scenePath = null, outDir = null;
+        if (args is ["replay", .. var rest])
+        {
+            return ReplayCommand.Run(rest, output, error);
+        }
+
+        string? scenePath = null, outDir = null, capturePath = null;
         int? frames = null;
         bool quiet = false;
         for (int i = 0; i < args.Length; i++)
@@ -58,10 +74,10 @@ internal static class MainJob
                 case "--quiet":
                     quiet = true;
                     break;
-                case "--scene" or "--out" or "--frames":
+                case "--scene" or "--out" or "--frames" or "--capture":
                     if (i + 1 >= args.Length || args[i + 1].StartsWith("--", StringComparison.Ordinal))
                     {
-                        return Fail(error, $"option {arg} needs a value ({(arg == "--frames" ? "a number of frames" : arg == "--out" ? "a folder" : "a scene file")}).");
+                        return Fail(error, $"option {arg} needs a value ({(arg == "--frames" ? "a number of frames" : arg == "--out" ? "a folder" : arg == "--capture" ? "a capture file" : "a scene file")}).");
                     }
 
                     string value = args[++i];
@@ -72,6 +88,10 @@ internal static class MainJob
                     else if (arg == "--out")
                     {
                         outDir = value;
+                    }
+                    else if (arg == "--capture")
+                    {
+                        capturePath = value;
                     }
                     else if (int.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out int n) && n > 0)
                     {
@@ -100,7 +120,17 @@ internal static class MainJob
         }
 
         HoltburgWorld world = scene.CreateWorld();
-        WalkRecord record = SceneRunner.Run(scene, world, frames);
+        WalkRecord record;
+        int calls = 0;
+        try
+        {
+            (record, calls) = capturePath is null ? (SceneRunner.Run(scene, world, frames), 0) : CaptureRun.Run(scene, world, frames, capturePath);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            error.WriteLine($"error: cannot write the capture {capturePath}: {e.Message}");
+            return 1;
+        }
 
         string svgPath = Path.GetFullPath(Path.Combine(outDir ?? "out", FileName(scene.Name) + ".svg"));
         string pagePath = Path.ChangeExtension(svgPath, ".html");
@@ -122,6 +152,10 @@ internal static class MainJob
         }
 
         output.Write(quiet ? $"SVG: {svgPath}{System.Environment.NewLine}" : WalkReport.Format(record, svgPath) + $"Page: {pagePath}{System.Environment.NewLine}");
+        if (capturePath is not null)
+        {
+            output.WriteLine($"Capture: {Path.GetFullPath(capturePath)} ({calls} calls)");
+        }
         return 0;
     }
 

@@ -138,6 +138,53 @@ public class WalkSvgTests
         svg.Descendants(Svg + "text").Select(t => t.Value).Should().Contain(t => t.StartsWith("the chase camera's eye", StringComparison.Ordinal), "the legend names it");
     }
 
+    [Fact]
+    public void Build_HasScaleBarsAnInsetOfTheRoomsJumpAndLandingMarksAndTheCamerasBoom()
+    {
+        var world = new HoltburgWorld();
+        Scene scene = SceneReader.Parse("""
+            { "name": "marks", "start": { "position": [84, 5.15], "heading": 90 }, "effects": "player",
+              "legs": [ { "name": "in", "to": [137.2, 5.15] }, { "name": "room", "to": [139, 10] }, { "name": "jump", "forward": 0, "seconds": 1.5, "jump": true } ] }
+            """, "test");
+        WalkRecord record = SceneRunner.Run(scene, world);
+        XDocument svg = WalkSvg.Build(record, world);
+        XElement Group(string id) => svg.Descendants(Svg + "g").Single(g => (string?)g.Attribute("id") == id);
+
+        // A scale bar on the map and on the inset: a round number of metres, its length that many metres at the panel's scale.
+        XElement[] bars = [.. svg.Descendants(Svg + "g").Where(g => (string?)g.Attribute("class") == "scale-bar")];
+        bars.Should().HaveCount(2, "one on the map, one on the inset");
+        foreach (XElement bar in bars)
+        {
+            float metres = Number(bar, "data-metres");
+            new[] { 0.5f, 1f, 2f, 5f, 10f, 20f, 50f, 100f, 200f }.Should().Contain(metres);
+            XElement line = bar.Elements(Svg + "line").First();
+            float pixels = Number(line, "x2") - Number(line, "x1");
+            (pixels / metres).Should().BeInRange(0.5f, 1000f);
+            bar.Elements(Svg + "text").Single().Value.Should().Be(string.Create(CultureInfo.InvariantCulture, $"{metres:0.#} m"));
+        }
+
+        // The inset frames the rooms the route went through, closer than the map.
+        XElement inset = Group("inset");
+        inset.Descendants(Svg + "g").Should().Contain(g => (string?)g.Attribute("id") == "inset-floors");
+        float Scale(XElement bar) => (Number(bar.Elements(Svg + "line").First(), "x2") - Number(bar.Elements(Svg + "line").First(), "x1")) / Number(bar, "data-metres");
+        Scale(bars[1]).Should().BeGreaterThan(Scale(bars[0]), "the inset is closer than the map");
+        svg.Descendants(Svg + "g").Count(g => (string?)g.Attribute("id") == "floors").Should().Be(1, "the inset's ids are its own");
+
+        // A jump and its landing marked where they happened, on the map and on the inset.
+        int jumps = record.Samples.Count(s => s.Moved.Jumps > 0), landings = record.Samples.Count(s => s.Moved.Landings > 0);
+        (jumps, landings).Should().Be((1, 1), "one jump, one landing");
+        foreach (string id in new[] { "air-marks", "inset-air-marks" })
+        {
+            XElement marks = svg.Descendants(Svg + "g").Single(g => (string?)g.Attribute("id") == id);
+            marks.Elements(Svg + "polygon").Select(p => (string?)p.Attribute("class")).Should().BeEquivalentTo(["jump", "landing"], id);
+        }
+
+        // The camera's boom: a line from the player to the eye every 2 s, and the legend says what the eye's path is.
+        XElement[] sights = [.. Group("camera-sights").Elements(Svg + "line")];
+        sights.Should().HaveCount(record.Samples.Count(s => s.Frame % 60 == 0));
+        svg.Descendants(Svg + "text").Select(t => t.Value).Should().Contain(t => t.Contains("the boom swinging as the player turns", StringComparison.Ordinal));
+    }
+
     private static float Number(XElement element, string attribute) => float.Parse((string)element.Attribute(attribute)!, CultureInfo.InvariantCulture);
 
     private static Vector2[] Points(string points) =>

@@ -23,7 +23,7 @@ ResolveResult r = engine.Resolve(start, startCell, delta: new Vector3(1f, 0f, 0f
 Console.WriteLine(FormattableString.Invariant(
     $"Resolve: position ({r.Position.X:F3}, {r.Position.Y:F3}, {r.Position.Z:F3}), cell 0x{r.CellId:X8}, on ground {r.IsOnGround}"));
 
-CastHit down = engine.Cast(start + new Vector3(0f, 0f, 5f), startCell, start - new Vector3(0f, 0f, 5f), new CastOptions(0f));
+CastHit down = engine.Cast(new CastRequest(start + new Vector3(0f, 0f, 5f), startCell, new Vector3(0f, 0f, -10f)));
 Console.WriteLine(FormattableString.Invariant(
     $"Cast: {down.Kind} at ({down.Point.X:F3}, {down.Point.Y:F3}, {down.Point.Z:F3}), fraction {down.Fraction:F3}"));
 

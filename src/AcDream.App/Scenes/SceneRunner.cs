@@ -42,9 +42,9 @@ internal static class SceneRunner
     /// <summary>Runs <paramref name="scene"/> in its own world (<see cref="Scene.CreateWorld"/>).</summary>
     public static WalkRecord Run(Scene scene, int? maxFrames = null) => Run(scene, scene.CreateWorld(), maxFrames);
 
-    /// <summary>Runs <paramref name="scene"/>; stops after <paramref name="maxFrames"/> frames if given.</summary>
+    /// <summary>Runs <paramref name="scene"/>; stops after <paramref name="maxFrames"/> frames if given; <paramref name="recorder"/>, if given, sees every call of its engine.</summary>
     /// <exception cref="ArgumentException"><paramref name="world"/> is not the scene's world with its objects.</exception>
-    public static WalkRecord Run(Scene scene, HoltburgWorld world, int? maxFrames = null)
+    public static WalkRecord Run(Scene scene, HoltburgWorld world, int? maxFrames = null, IEngineRecorder? recorder = null)
     {
         if (!world.Is(scene.World, scene.Objects ?? []))
         {
@@ -69,6 +69,7 @@ internal static class SceneRunner
 
         using var window = new GameWindow(world, world.HeightTable, world.Center, warnings.Add);
         PhysicsEngine engine = window.Physics;
+        engine.Recorder = recorder;
         window.LandblockLoaded += id =>
         {
             streaming.Add(new StreamingEvent(frame, id, true, window.ObjectCounts.GetValueOrDefault(id)));

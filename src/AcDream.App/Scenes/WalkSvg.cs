@@ -58,8 +58,10 @@ internal static partial class WalkSvg
 
         // Map extent: the route and the creatures' paths, padded, in world metres (the engine's frame: 0xA9B4's SW corner is (0, 0)).
         Vector3[] drawn = [.. samples.Select(s => s.Position), .. record.Creatures.SelectMany(c => c.Samples).Select(s => s.Position)];
-        float minX = drawn.Min(p => p.X) - 15f, maxX = drawn.Max(p => p.X) + 15f;
-        float minY = drawn.Min(p => p.Y) - 15f, maxY = drawn.Max(p => p.Y) + 15f;
+        // Padded by a tenth of the larger span, 3 to 15 m: a walk over a village keeps its 15 m, one up a stair is framed on it.
+        float pad = Math.Clamp(0.1f * MathF.Max(drawn.Max(p => p.X) - drawn.Min(p => p.X), drawn.Max(p => p.Y) - drawn.Min(p => p.Y)), 3f, 15f);
+        float minX = drawn.Min(p => p.X) - pad, maxX = drawn.Max(p => p.X) + pad;
+        float minY = drawn.Min(p => p.Y) - pad, maxY = drawn.Max(p => p.Y) + pad;
         float scale = MathF.Min((Width - (2 * Margin)) / (maxX - minX), MapMaxHeight / (maxY - minY));
         float mapHeight = (maxY - minY) * scale;
         float mapTop = Margin;
@@ -71,9 +73,12 @@ internal static partial class WalkSvg
         AddFloorPlans(map, world, frame, colours, Map);
         AddObjects(map, world, frame, scale, Map);
         AddDoors(map, record, world, Map);
+        AddDoorRings(map, record, world, Map);
         AddCreatures(map, record, scale, Map);
         map.Add(EyePath(samples, s => Map(s.Camera.Eye.X, s.Camera.Eye.Y), s => new Vector2(s.Camera.Eye.X, s.Camera.Eye.Y)));
+        map.Add(Sights(samples, Map));
         AddRoute(map, samples, colours, s => Map(s.Position.X, s.Position.Y));
+        AddAirMarks(map, samples, s => Map(s.Position.X, s.Position.Y));
         foreach (Vector2 p in samples.Where(s => s.Refusal is not null).Select(s => Map(s.Position.X, s.Position.Y)).Distinct())
         {
             map.Add(new XElement(Svg + "circle", Attr("cx", p.X), Attr("cy", p.Y), Attr("r", 4f), new XAttribute("fill", "none"), new XAttribute("stroke", "#d00"), Attr("stroke-width", 1.5f)));
@@ -89,9 +94,14 @@ internal static partial class WalkSvg
         map.Add(Label(start.X + 5, start.Y - 5, "start", 12));
         map.Add(Label(end.X + 5, end.Y + 14, "end", 12));
         map.Add(Label(Margin, mapTop - 8, Invariant($"{record.Scene.Name}: top-down, north up, {ScaleText(scale)}; contours every {ContourInterval} m; red rings: refused moves{(body is null ? "" : "; blue circles: the body at walls")}"), 13));
+        map.Add(ScaleBar(Margin + 10f, mapTop + mapHeight - 12f, scale));
+
+        // The inset: the objects at a scale where the rooms show.
+        XElement? inset = Inset(record, world, frame, (colours, scale), mapTop + mapHeight + 50f, out float insetHeight);
+        float insetBottom = inset is null ? mapTop + mapHeight : mapTop + mapHeight + 50f + insetHeight;
 
         // Profile: Z over frames.
-        float profileTop = mapTop + mapHeight + 60f;
+        float profileTop = insetBottom + 60f;
         float minZ = samples.Min(s => MathF.Min(s.Position.Z, s.Camera.Eye.Z)) - 1f, maxZ = samples.Max(s => MathF.Max(s.Position.Z, s.Camera.Eye.Z)) + 1f;
         int frames = Math.Max(1, record.Final.Frame);
         Vector2 Profile(int frame, float z) => new(Margin + (frame * (Width - (2 * Margin)) / frames), profileTop + ((maxZ - z) * ProfileHeight / (maxZ - minZ)));
@@ -145,7 +155,7 @@ internal static partial class WalkSvg
         {
             ly += 18f;
             legend.Add(new XElement(Svg + "rect", Attr("x", Margin), Attr("y", ly - 7), Attr("width", 10f), Attr("height", 4f), new XAttribute("fill", DoorColour)));
-            legend.Add(Label(Margin + 14, ly, Invariant($"doors, seen from above: their slabs ({string.Join(", ", record.DoorChanges.Select(d => d.DoorId).Distinct().Select(id => $"0x{id:X8}{(HoltburgWorld.ObjectName(id) is string n ? $" {n}" : "")}"))})"), 11));
+            legend.Add(Label(Margin + 14, ly, Invariant($"doors, seen from above: their slabs, ringed on the map so they show at its scale ({string.Join(", ", record.DoorChanges.Select(d => d.DoorId).Distinct().Select(id => $"0x{id:X8}{(HoltburgWorld.ObjectName(id) is string n ? $" {n}" : "")}"))})"), 11));
         }
 
         if (record.Creatures.Count > 0)
@@ -157,7 +167,13 @@ internal static partial class WalkSvg
 
         ly += 18f;
         legend.Add(new XElement(Svg + "line", Attr("x1", Margin), Attr("y1", ly - 4), Attr("x2", Margin + 10), Attr("y2", ly - 4), new XAttribute("stroke", EyeColour), Attr("stroke-width", 1.5f)));
-        legend.Add(Label(Margin + 14, ly, Invariant($"the chase camera's eye ({ChaseCamera.ViewerRadius} m sphere), beside the player's route: its path on the map, its Z in the profile"), 11));
+        legend.Add(Label(Margin + 14, ly, EyeLegend()[0], 11));
+        ly += 14f;
+        legend.Add(Label(Margin + 14, ly, EyeLegend()[1], 11));
+        ly += 18f;
+        legend.Add(new XElement(Svg + "polygon", new XAttribute("points", Invariant($"{Margin + 5},{ly - 10} {Margin},{ly - 1} {Margin + 10},{ly - 1}")), new XAttribute("fill", "#2e7d32")));
+        legend.Add(new XElement(Svg + "polygon", new XAttribute("points", Invariant($"{Margin + 25},{ly} {Margin + 20},{ly - 9} {Margin + 30},{ly - 9}")), new XAttribute("fill", "#c62828")));
+        legend.Add(Label(Margin + 34, ly, "jumps (where the frame took off) and landings (where it came down), on the map and the inset", 11));
         ly += 18f;
         legend.Add(new XElement(Svg + "circle", Attr("cx", Margin + 5), Attr("cy", ly - 4), Attr("r", 4f), new XAttribute("fill", "none"), new XAttribute("stroke", "#d00"), Attr("stroke-width", 1.5f)));
         legend.Add(Label(Margin + 14, ly, "refused move (the engine's outcome; the summary names it)", 11));
@@ -177,6 +193,7 @@ internal static partial class WalkSvg
             new XAttribute("font-family", "sans-serif"),
             new XElement(Svg + "rect", Attr("x", 0f), Attr("y", 0f), new XAttribute("width", "100%"), new XAttribute("height", "100%"), new XAttribute("fill", "white")),
             map,
+            inset,
             profile,
             legend);
         return new XDocument(new XDeclaration("1.0", "utf-8", null), root);

@@ -18,8 +18,11 @@ public readonly record struct MovementOptions
     public static MovementOptions Literal => default;
 
     /// <summary>
-    /// What a player uses: step down 1.5 m, the walkable-slope limit, sweeps of 0.48 m (a player's
-    /// sphere radius), entry through doors only, and the player's body (<see cref="MoverBody.Player"/>).
+    /// What a player uses, every effect: step down 1.5 m (<see cref="StepDownHeight"/>), the walkable-slope limit
+    /// (<see cref="WalkableSlope"/>), sweeps of 0.48 m, a player's sphere radius (<see cref="SweepStepLength"/>), entry
+    /// through doors only (<see cref="DoorsOnly"/>), the player's body (<see cref="Body"/>, <see cref="MoverBody.Player"/>),
+    /// and the body in three dimensions: vertical motion (<see cref="Vertical"/>), footing (<see cref="Footing"/>) and edge
+    /// slide (<see cref="EdgeSlide"/>).
     /// </summary>
     public static MovementOptions Player => new()
     {

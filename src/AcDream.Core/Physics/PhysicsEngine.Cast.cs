@@ -49,6 +49,14 @@ public sealed partial class PhysicsEngine
     /// <exception cref="ArgumentException">A position or the delta is not finite (or the end overflows), the radius is negative or not finite, the cell id is not a cell of the world, or an indoor cell is not in its loaded landblock; each named <c>request</c>, with the field.</exception>
     public CastHit Cast(in CastRequest request)
     {
+        CastHit hit = CastAnswer(in request);
+        _recorder?.Cast(in request, in hit);
+        return hit;
+    }
+
+    /// <summary>The cast's answer (the public call's, before its recorder sees it).</summary>
+    private CastHit CastAnswer(in CastRequest request)
+    {
         Vector3 from = request.From, to = from + request.Delta;
         uint fromCellId = request.FromCellId;
         CastOptions options = request.Options;

@@ -32,6 +32,14 @@ public sealed partial class PhysicsEngine
     public MoveResult Resolve(in MoveRequest request, Span<uint> touched = default)
 #pragma warning restore RS0027
     {
+        MoveResult result = Answer(in request, touched);
+        _recorder?.Resolved(in request, touched, in result);
+        return result;
+    }
+
+    /// <summary>The general move's answer (the public call's, before its recorder sees it).</summary>
+    private MoveResult Answer(in MoveRequest request, Span<uint> touched)
+    {
         MoveQuery.Validate(in request);
         MovementOptions options = request.Options;
         var lands = new Neighbourhood(_registry);

@@ -126,7 +126,11 @@ public sealed partial class PhysicsEngine
         uint landblockId,
         TerrainSurface terrain,
         IReadOnlyList<CellSurface> cells,
-        IReadOnlyList<ObjectSurface> objects) => _registry.Set(LandblockAssembly.Build(landblockId, terrain, cells, objects));
+        IReadOnlyList<ObjectSurface> objects)
+    {
+        _registry.Set(LandblockAssembly.Build(landblockId, terrain, cells, objects));
+        _recorder?.LandblockAdded(CellIds.LandblockOf(landblockId));
+    }
 
     /// <summary>Remove all surfaces for an unloaded landblock.</summary>
     /// <remarks>Any low 16 bits are accepted. Removing a landblock that is not registered does nothing, so an unload path may call it unconditionally. One writer thread at a time; resolvers may run meanwhile.</remarks>
@@ -134,6 +138,7 @@ public sealed partial class PhysicsEngine
     {
         int x = CellIds.LandblockX(landblockId), y = CellIds.LandblockY(landblockId);
         _registry.Remove(x, y);
+        _recorder?.LandblockRemoved(landblockId);
     }
 
     /// <summary>

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Drawing;
 
 namespace AcDream.Core.Physics;
 
@@ -86,6 +87,8 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
         bool landed = false;
         for (int k = 0; k < steps; k++)
         {
+            Vector3 from = at.Position; // (where this sub-step sets out, for drawing)
+
             // Rising, the body first rises (its top stopped under the first surface over it), then moves across from there:
             // the move across is what resting there gives, its cell and ground found at its new height.
             if (up > 0f && !landed)
@@ -114,6 +117,7 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
             }
 
             at = moved;
+            MoveDrawing.SubStep(from, at.Position);
             if (landed || (at.IsOnGround && up == 0f))
             {
                 landed |= at.IsOnGround;
@@ -279,6 +283,11 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
         float reach = q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach;
         Vector2 outward = Supports.EdgeNormal(ref q.Lands, in place, -1, place.Local, to, reach, q.Z, out SurfaceContact edge, out Vector2 nearest);
         q.Meet(SurfaceKind.FloorEdge, edge.Id);
+        if (MoveDrawing.On)
+        {
+            MoveDrawing.Edge(q.Position, place.Local, nearest, outward, edge.Id);
+        }
+
         if (outward != Vector2.Zero)
         {
             // Out to where the floor still holds the body (its edge, plus the support reach with footing), less a margin;

@@ -1,6 +1,7 @@
 using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Drawing;
 
 namespace AcDream.Core.Physics;
 
@@ -202,6 +203,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
 
         q.Meet(hit.Source.Kind, hit.Source.Id);
         normal = hit.Normal;
+        MoveDrawing.Ceiling(position, hit.Z, hit.Normal);
         float skin = PhysicsConstants.BodySkin + (2f * Geometry.Spacing(MathF.Abs(hit.Z) + body.Height));
         return Math.Clamp(hit.Z - skin - top, 0f, dz);
     }

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Drawing;
 
 namespace AcDream.Core.Physics;
 
@@ -46,6 +47,11 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
 
         var wall = new Vector3(path.Normal.X, path.Normal.Y, 0f);
         q.Meet(path.Wall.Kind, path.Wall.Id);
+        if (MoveDrawing.On)
+        {
+            MoveDrawing.BodyContact(frame.ToWorld(lbX, lbY, points[path.Count > 1 ? 1 : 0], q.Z), path.Normal, q.Options.Body!.Value);
+        }
+
         if (path.Count == 1)
         {
             return Stopped(ref q, wall);
@@ -118,6 +124,7 @@ internal sealed class BodyResolver(BodyPlanner planner, WorldFrame frame, PointM
                 return Stopped(ref stay, ceiling);
             }
 
+            MoveDrawing.SubStep(at.Position, next.Position);
             (result, at) = (next, next);
         }
 

@@ -60,5 +60,6 @@ public sealed partial class MoverRegistry
         }
 
         Volatile.Write(ref _commitNumber, number);
+        Recorder?.Committed(number);
     }
 }

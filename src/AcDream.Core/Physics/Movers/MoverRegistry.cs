@@ -32,6 +32,9 @@ public sealed partial class MoverRegistry
     private long _version;
     private MoverFrame? _current;
 
+    /// <summary>The engine's recorder (<see cref="PhysicsEngine.Recorder"/>), told every change inside the lock; null: none.</summary>
+    internal IEngineRecorder? Recorder;
+
     internal MoverRegistry(WorldFrame frame) => _frame = frame;
 
     /// <summary>How many movers are registered (committed or not).</summary>
@@ -75,6 +78,7 @@ public sealed partial class MoverRegistry
 
             _slots.Add(id, _count);
             _movers[_count++] = slot;
+            Recorder?.MoverAdded(id, shape, position, cellId, orientation, state);
         }
     }
 
@@ -88,6 +92,7 @@ public sealed partial class MoverRegistry
             Slot placed = Place(id, position, cellId, orientation);
             (slot.X, slot.Y, slot.Local, slot.Cos, slot.Sin, slot.CellId, slot.Version) =
                 (placed.X, placed.Y, placed.Local, placed.Cos, placed.Sin, placed.CellId, ++_version);
+            Recorder?.MoverMoved(id, position, cellId, orientation);
         }
     }
 
@@ -99,6 +104,7 @@ public sealed partial class MoverRegistry
         {
             ref Slot slot = ref Find(id);
             (slot.State, slot.Closing) = (state, false);
+            Recorder?.MoverStateSet(id, state);
         }
     }
 
@@ -117,13 +123,14 @@ public sealed partial class MoverRegistry
     {
         lock (_write)
         {
-            if (!_slots.Remove(id, out int i))
+            bool removed = _slots.Remove(id, out int i);
+            if (removed)
             {
-                return false;
+                RemoveAt(i);
             }
 
-            RemoveAt(i);
-            return true;
+            Recorder?.MoverRemoved(id, removed);
+            return removed;
         }
     }
 
@@ -143,6 +150,7 @@ public sealed partial class MoverRegistry
                 }
             }
 
+            Recorder?.MoversOfLandblockRemoved(landblockId, removed);
             return removed;
         }
     }
@@ -156,6 +164,7 @@ public sealed partial class MoverRegistry
             ref Slot door = ref FindDoor(doorId);
             door.State = door.State with { Physics = door.State.Physics | PhysicsStateFlags.Ethereal };
             door.Closing = false;
+            Recorder?.DoorOpened(doorId);
         }
     }
 
@@ -171,6 +180,7 @@ public sealed partial class MoverRegistry
         {
             ref Slot door = ref FindDoor(doorId);
             door.Closing = (door.State.Physics & PhysicsStateFlags.Ethereal) != 0;
+            Recorder?.DoorClosed(doorId);
         }
     }
 

@@ -62,7 +62,11 @@ public sealed class MoverShape
     private MoverShape(float radius, float height)
         : this(CellWalls.Build("cylinder", [], [], [(Vector3.Zero, radius, height)], "radius"), "cylinder", "radius")
     {
+        CylinderBody = new MoverBody(radius, height);
     }
+
+    /// <summary>The cylinder's radius and height (metres) when this shape was built by <see cref="Cylinder"/>; null for a model's walls.</summary>
+    public MoverBody? CylinderBody { get; }
 
     /// <summary>How far its walls reach from its origin, seen from above, metres.</summary>
     public float Reach { get; }

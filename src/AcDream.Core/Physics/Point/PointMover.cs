@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Drawing;
 
 namespace AcDream.Core.Physics;
 
@@ -29,10 +30,12 @@ internal sealed class PointMover(OutdoorResolver outdoor, IndoorResolver indoor)
         Vector2 step = q.Delta / steps;
         MoveQuery query = q.Next(q.Position, q.CellId, step);
         ResolveResult result = Checked(ref query, SweptStep(ref query));
+        MoveDrawing.SubStep(q.Position, result.Position);
         for (int i = 1; i < steps && !result.IsRefused; i++)
         {
             query = q.Next(result.Position, result.CellId, step);
             result = Answers.Continue(result, Checked(ref query, SweptStep(ref query)));
+            MoveDrawing.SubStep(query.Position, result.Position);
         }
 
         return result;

@@ -14,6 +14,9 @@ internal sealed class PortalShape
     /// <summary>For a vertical portal: its polygon in its own plane, (along <see cref="Tangent"/> from <see cref="Origin"/>, Z); an arch is not its bounding rectangle.</summary>
     private Vector2[] Profile { get; init; } = [];
 
+    /// <summary>A vertical portal's vertices as (along <see cref="Tangent"/> from <see cref="Origin"/>, Z); empty for the other kinds.</summary>
+    public ReadOnlySpan<Vector2> ProfilePoints => Profile;
+
     private PortalShape(PortalKind kind, Vector3 origin, Vector3 outNormal, Vector2 tangent, float tMin, float tMax, float zMin, float zMax, Vector2[] outline)
     {
         Kind = kind;
