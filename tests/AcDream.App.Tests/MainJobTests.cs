@@ -387,7 +387,7 @@ public sealed class MainJobTests : IDisposable
         XNamespace ns = "http://www.w3.org/2000/svg";
         document.Descendants(ns + "g").Select(g => (string?)g.Attribute("id")).Should().Contain(["map", "contours"]);
         document.Descendants(ns + "path").Should().NotBeEmpty("terrain contours up to the edge");
-        Directory.GetFiles(_folder).Select(Path.GetFileName).Should().BeEquivalentTo(["east.json", "east-edge.svg"], "no temporary file is left behind");
+        Directory.GetFiles(_folder).Select(Path.GetFileName).Should().BeEquivalentTo(["east.json", "east-edge.svg", "east-edge.html"], "no temporary file is left behind (the SVG and the page beside it)");
     }
 
     [Fact]
