@@ -43,6 +43,8 @@ public sealed class Character
     private State _now;
     private State _before;
     private int _jumpSkill;
+    private readonly Vector3[] _slides; // each slid step's normal, the last update's; as long as a frame's most steps
+    private int _slideCount;
     private float _jumpPower = 1f;
 
     /// <summary>A character standing at <paramref name="position"/> in <paramref name="cellId"/>, on the ground, not moving vertically.</summary>
@@ -70,6 +72,7 @@ public sealed class Character
         _now = new State(position, cellId, true, 0f);
         _before = _now;
         _jumpSkill = settings.JumpSkill;
+        _slides = new Vector3[Math.Max(1, (int)MathF.Ceiling(settings.MaxFrameSeconds / settings.MaxStepSeconds))];
     }
 
     /// <summary>How it moves.</summary>
@@ -102,6 +105,12 @@ public sealed class Character
         get => _jumpPower;
         set => _jumpPower = value is >= 0f and <= 1f ? value : throw new ArgumentOutOfRangeException(nameof(JumpPower), value, "a jump's power must be within 0..1.");
     }
+
+    /// <summary>
+    /// The surface normal of each step the last <see cref="Update"/> slid along a wall or a slope (<see cref="CharacterStep.SlidSteps"/>
+    /// of them), in step order: a wall's is horizontal and faces the character. Valid until the next update.
+    /// </summary>
+    public ReadOnlySpan<Vector3> SlideNormals => _slides.AsSpan(0, _slideCount);
 
     /// <summary>Whether it can jump: its effects move the body vertically (<see cref="MovementOptions.Vertical"/> with a body).</summary>
     public bool CanJump => _vertical;
@@ -161,6 +170,7 @@ public sealed class Character
         }
 
         _before = _now;
+        _slideCount = 0;
         if (seconds == 0f)
         {
             return Step(default);
@@ -175,6 +185,10 @@ public sealed class Character
             bool wasOnGround = _now.IsOnGround;
             ResolveResult result = Move(velocity * dt, dt, touched, ref frame, out MoveReport report);
             frame.Add(in result, in report, !wasOnGround && _now.IsOnGround);
+            if (result.Outcome == ResolveOutcome.Slid && !result.IsRefused && _slideCount < _slides.Length)
+            {
+                _slides[_slideCount++] = result.SurfaceNormal;
+            }
         }
 
         return Step(in frame);

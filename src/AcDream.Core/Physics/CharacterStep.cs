@@ -32,7 +32,7 @@ public readonly record struct CharacterStep
     /// <summary>Steps the engine answered <see cref="ResolveOutcome.Slid"/>: the body touched a wall (or a slope too steep) and moved on along it.</summary>
     public int SlidSteps { get; init; }
 
-    /// <summary>The surface normal of the last slid step: a wall's unit normal (horizontal, towards the character) or a slope's; zero when none slid.</summary>
+    /// <summary>The surface normal of the last slid step: a wall's unit normal (horizontal, towards the character) or a slope's; zero when none slid. Every slid step's normal, in order: <see cref="Character.SlideNormals"/>.</summary>
     public Vector3 LastSlideNormal { get; init; }
 
     /// <summary>What the steps met (<see cref="MoveReport"/>): the floor the last step stands on, and the wall, shell, cylinder or mover of the last step that one stopped or slid.</summary>

@@ -138,6 +138,27 @@ public class CharacterTests(ITestOutputHelper output)
         nan.Should().Throw<ArgumentOutOfRangeException>().WithParameterName("velocity");
     }
 
+    [Theory]
+    [MemberData(nameof(Frames))]
+    public void Each_slid_step_names_its_normal_in_order(string frame)
+    {
+        PhysicsEngine engine = RealObjects.HoltburgWithCellarStairs(frame);
+        var character = new Character(engine, new CharacterSettings(), engine.ToWorld(TestData.Holtburg, new Vector3(139f, 6f, 94f)), MainRoom);
+        CharacterStep step = character.Update(1f, new Vector2(1f, -3f), jump: false); // 10 steps, into the room's south wall at a slant
+        step.SlidSteps.Should().BeGreaterThan(1, $"{frame}: it reaches the wall and slides along it: {step}");
+        character.SlideNormals.Length.Should().Be(step.SlidSteps);
+        character.SlideNormals[^1].Should().Be(step.LastSlideNormal);
+        foreach (Vector3 normal in character.SlideNormals)
+        {
+            (normal.Z, normal.Length()).Should().Be((0f, normal.Length()), "a wall's normal is horizontal");
+            normal.Length().Should().BeApproximately(1f, 1e-5f);
+            normal.Y.Should().BeGreaterThan(0.9f, $"{frame}: the south wall faces north, towards the character");
+        }
+
+        character.Update(1f / 30f, Vector2.Zero, jump: false);
+        character.SlideNormals.Length.Should().Be(0, "each update starts its own list");
+    }
+
     [Fact]
     public void The_movers_touched_are_merged_across_steps_in_the_order_met_and_an_update_allocates_nothing()
     {
