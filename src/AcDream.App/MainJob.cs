@@ -48,7 +48,8 @@ internal static class MainJob
         replay FILE      replays a capture against a fresh engine in the scene's world and
                          compares every answer bit for bit: exit status 0 all the same,
                          1 the first line whose answer differs (both answers and the call's
-                         inputs printed), 2 a bad file (its line and field named).
+                         inputs printed), 2 a bad file (its line and field named);
+                         it writes the walk's page beside FILE (FILE.html) and says where.
         """;
 
     /// <summary>Runs the job with command-line <paramref name="args"/>; returns the exit status.</summary>

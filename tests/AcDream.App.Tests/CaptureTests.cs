@@ -2,6 +2,8 @@ using System.Diagnostics;
 using System.IO.Compression;
 using System.Text.Json.Nodes;
 using AcDream.App.Capture;
+using AcDream.App.Scenes;
+using AcDream.App.World;
 using Xunit.Abstractions;
 
 namespace AcDream.App.Tests;
@@ -46,6 +48,13 @@ public sealed class CaptureTests(ITestOutputHelper log) : IDisposable
         (status, output, _) = RunApp("replay", capture);
         status.Should().Be(0, output);
         output.Should().StartWith($"replayed {lines.Length - 1} calls: all answers the same");
+
+        // The replay writes the walk's page beside the capture: the page of the scene's first 60 frames, byte for byte.
+        string page = Path.Combine(_folder, "short.capture.html");
+        output.Should().Contain($"Page: {page}");
+        Scene scene = SceneReader.ReadDefault();
+        HoltburgWorld world = scene.CreateWorld();
+        File.ReadAllText(page).Should().Be(WalkPage.Build(SceneRunner.Run(scene, world, 60), world), "the replayed walk's page");
     }
 
     [Theory]

@@ -1,6 +1,8 @@
 using System.Diagnostics;
 using System.Globalization;
 using System.Text.RegularExpressions;
+using AcDream.App.Scenes;
+using AcDream.App.World;
 
 namespace AcDream.App.Capture;
 
@@ -25,11 +27,13 @@ internal static partial class ReplayCommand
 
         var clock = Stopwatch.StartNew();
         ReplayDifference? difference;
-        int calls;
+        int calls, frames;
+        CaptureHeader header;
         try
         {
-            (CaptureHeader header, List<CaptureCall> read) = CaptureReader.ReadFile(args[0]);
+            (header, List<CaptureCall> read) = CaptureReader.ReadFile(args[0]);
             calls = read.Count;
+            frames = read.Count(c => c.Kind == CaptureKind.Commit) - 1; // the scene runner commits once before its first frame, then once a frame
             difference = CaptureReplay.Run(header, read);
         }
         catch (CaptureFormatException e)
@@ -38,14 +42,45 @@ internal static partial class ReplayCommand
             return MainJob.BadInput;
         }
 
-        if (difference is null)
+        output.Write(difference is null
+            ? $"replayed {calls} calls: all answers the same ({clock.Elapsed.TotalSeconds.ToString("0.0", CultureInfo.InvariantCulture)} s).{System.Environment.NewLine}"
+            : Describe(difference));
+        string page = PagePath(args[0]);
+        try
         {
-            output.WriteLine($"replayed {calls} calls: all answers the same ({clock.Elapsed.TotalSeconds.ToString("0.0", CultureInfo.InvariantCulture)} s).");
-            return 0;
+            MainJob.WriteAtomically(page, stream => WritePage(header, frames, stream));
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            error.WriteLine($"error: cannot write the page {page}: {e.Message}");
+            return 1;
         }
 
-        output.Write(Describe(difference));
-        return Differs;
+        output.WriteLine($"Page: {page}");
+        return difference is null ? 0 : Differs;
+    }
+
+    /// <summary>
+    /// The page of the capture's walk (<see cref="WalkPage"/>): its scene run again for as many frames as the capture
+    /// committed, the walk the engine answers now (the one captured when every answer is the same).
+    /// </summary>
+    internal static void WritePage(CaptureHeader header, int frames, Stream stream)
+    {
+        Scene scene = header.Scene == CaptureHeader.EmbeddedDefault ? SceneReader.ReadDefault() : SceneReader.ReadFile(header.Scene);
+        HoltburgWorld world = scene.CreateWorld();
+        WalkPage.Write(SceneRunner.Run(scene, world, Math.Max(1, frames)), world, stream);
+    }
+
+    /// <summary>Where the replay writes the page: beside the capture, its name without <c>.gz</c> and <c>.jsonl</c>, with <c>.html</c>.</summary>
+    internal static string PagePath(string capture)
+    {
+        string path = Path.GetFullPath(capture);
+        foreach (string extension in new[] { ".gz", ".jsonl" })
+        {
+            path = path.EndsWith(extension, StringComparison.OrdinalIgnoreCase) ? path[..^extension.Length] : path;
+        }
+
+        return path + ".html";
     }
 
     /// <summary>The lines that report a difference: the call's line and kind, both answers (floats as bits, then as numbers) and its inputs.</summary>
