@@ -125,7 +125,7 @@ internal static class MainJob
         int calls = 0;
         try
         {
-            (record, calls) = capturePath is null ? (SceneRunner.Run(scene, world, frames), 0) : CaptureRun.Run(scene, world, frames, capturePath);
+            (record, calls) = capturePath is null ? (SceneRunner.Run(scene, world, frames, null, new FrameDrawing()), 0) : CaptureRun.Run(scene, world, frames, capturePath, new FrameDrawing());
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {

@@ -54,7 +54,7 @@ public sealed class CaptureTests(ITestOutputHelper log) : IDisposable
         output.Should().Contain($"Page: {page}");
         Scene scene = SceneReader.ReadDefault();
         HoltburgWorld world = scene.CreateWorld();
-        File.ReadAllText(page).Should().Be(WalkPage.Build(SceneRunner.Run(scene, world, 60), world), "the replayed walk's page");
+        File.ReadAllText(page).Should().Be(WalkPage.Build(SceneRunner.Run(scene, world, 60, null, new FrameDrawing()), world), "the replayed walk's page, with what the engine drew");
     }
 
     [Theory]

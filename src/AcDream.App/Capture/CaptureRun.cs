@@ -9,13 +9,13 @@ namespace AcDream.App.Capture;
 internal static class CaptureRun
 {
     /// <summary>
-    /// Runs the scene as <see cref="SceneRunner.Run(Scene, HoltburgWorld, int?, AcDream.Core.Physics.IEngineRecorder?)"/> does,
+    /// Runs the scene as <see cref="SceneRunner.Run(Scene, HoltburgWorld, int?, AcDream.Core.Physics.IEngineRecorder?, FrameDrawing?)"/> does,
     /// recording every call into <paramref name="path"/> (gzip when its name ends in <c>.gz</c>), written through a temporary
     /// file renamed over it once complete.
     /// </summary>
     /// <returns>The walk, and how many calls the capture holds.</returns>
     /// <exception cref="IOException">The file cannot be written (or <see cref="UnauthorizedAccessException"/>).</exception>
-    public static (WalkRecord Record, int Calls) Run(Scene scene, HoltburgWorld world, int? maxFrames, string path)
+    public static (WalkRecord Record, int Calls) Run(Scene scene, HoltburgWorld world, int? maxFrames, string path, FrameDrawing? drawing = null)
     {
         var header = new CaptureHeader(HeaderScene(scene), world.Center);
         WalkRecord? record = null;
@@ -27,7 +27,7 @@ internal static class CaptureRun
             using Stream target = path.EndsWith(".gz", StringComparison.OrdinalIgnoreCase) ? new GZipStream(stream, CompressionLevel.SmallestSize, leaveOpen: true) : stream;
             using var writer = new StreamWriter(target, new UTF8Encoding(false), 1 << 16, leaveOpen: true) { NewLine = "\n" };
             var recorder = new CaptureRecorder(writer, header, world);
-            record = SceneRunner.Run(scene, world, maxFrames, recorder);
+            record = SceneRunner.Run(scene, world, maxFrames, recorder, drawing);
             calls = recorder.Calls;
         });
         return (record!, calls);

@@ -68,7 +68,7 @@ internal static partial class ReplayCommand
     {
         Scene scene = header.Scene == CaptureHeader.EmbeddedDefault ? SceneReader.ReadDefault() : SceneReader.ReadFile(header.Scene);
         HoltburgWorld world = scene.CreateWorld();
-        WalkPage.Write(SceneRunner.Run(scene, world, Math.Max(1, frames)), world, stream);
+        WalkPage.Write(SceneRunner.Run(scene, world, Math.Max(1, frames), null, new FrameDrawing()), world, stream);
     }
 
     /// <summary>Where the replay writes the page: beside the capture, its name without <c>.gz</c> and <c>.jsonl</c>, with <c>.html</c>.</summary>

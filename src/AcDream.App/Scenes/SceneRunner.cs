@@ -42,9 +42,13 @@ internal static class SceneRunner
     /// <summary>Runs <paramref name="scene"/> in its own world (<see cref="Scene.CreateWorld"/>).</summary>
     public static WalkRecord Run(Scene scene, int? maxFrames = null) => Run(scene, scene.CreateWorld(), maxFrames);
 
-    /// <summary>Runs <paramref name="scene"/>; stops after <paramref name="maxFrames"/> frames if given; <paramref name="recorder"/>, if given, sees every call of its engine.</summary>
+    /// <summary>
+    /// Runs <paramref name="scene"/>; stops after <paramref name="maxFrames"/> frames if given; <paramref name="recorder"/>, if
+    /// given, sees every call of its engine; <paramref name="drawing"/>, if given, receives what each of the player's moves
+    /// saw (the answers are the same either way).
+    /// </summary>
     /// <exception cref="ArgumentException"><paramref name="world"/> is not the scene's world with its objects.</exception>
-    public static WalkRecord Run(Scene scene, HoltburgWorld world, int? maxFrames = null, IEngineRecorder? recorder = null)
+    public static WalkRecord Run(Scene scene, HoltburgWorld world, int? maxFrames = null, IEngineRecorder? recorder = null, FrameDrawing? drawing = null)
     {
         if (!world.Is(scene.World, scene.Objects ?? []))
         {
@@ -88,6 +92,7 @@ internal static class SceneRunner
         ResolveResult start = StartOnGround(startXY, engine);
 
         var mode = new PlayerMovementMode(engine, start.Position, start.CellId, scene.StartHeadingDegrees * (MathF.PI / 180f), scene.Effects) { MoverId = PlayerId };
+        mode.Character.DebugSink = drawing;
         MoverBody playerBody = scene.Effects.Body ?? MoverBody.Player;
         window.AddMover(PlayerId, MoverShape.Cylinder(playerBody.Radius, playerBody.Height), start.Position, start.CellId, Facing(mode.Heading), MoverState.Player);
         window.CommitMovers();
@@ -154,6 +159,7 @@ internal static class SceneRunner
                 window.CommitMovers();
                 RecordDoors();
                 FrameSample before = samples[^1];
+                drawing?.Frame = frame;
                 CharacterStep moved = mode.Update(intent, dt);
                 foreach (uint id in mode.Touched)
                 {
@@ -202,6 +208,7 @@ internal static class SceneRunner
             Touches = touches,
             DoorChanges = doorChanges,
             Pointers = pointers,
+            Drawn = drawing?.Lines ?? [],
         };
 
         // A landblock loaded: its doors (closed) and the creatures whose home is in it appear.

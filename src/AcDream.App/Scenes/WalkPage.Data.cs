@@ -39,6 +39,7 @@ internal static partial class WalkPage
         WriteDoors(json, record, world);
         WriteTerrain(json, record, world, frame);
         WriteFrames(json, record);
+        WriteDrawn(json, record);
         WriteCreatures(json, record);
         json.WriteEndObject();
     }
@@ -190,6 +191,21 @@ internal static partial class WalkPage
         WriteStrings(json, "ids", ids.Select(Hex));
         WriteContacts(json, "floor", samples.Select(s => s.Moved.Met.Floor), ids);
         WriteContacts(json, "wall", samples.Select(s => s.Moved.Met.Wall), ids);
+        json.WriteEndObject();
+    }
+
+    /// <summary>
+    /// What the player's moves saw, as the engine drew it (<see cref="WalkRecord.Drawn"/>), in frame order: each segment's
+    /// frame (delta-coded), kind (index into "drawKinds") and ends (x, y, z of each, whole millimetres, in "ends", six a
+    /// segment).
+    /// </summary>
+    private static void WriteDrawn(Utf8JsonWriter json, WalkRecord record)
+    {
+        json.WriteStartObject("drawn");
+        WriteNames<DrawKind>(json, "kinds");
+        WriteDeltas(json, "frame", record.Drawn.Select(l => l.Frame));
+        WriteInts(json, "kind", record.Drawn.Select(l => (int)l.Kind));
+        WriteInts(json, "ends", record.Drawn.SelectMany(l => new[] { l.A.X, l.A.Y, l.A.Z, l.B.X, l.B.Y, l.B.Z }).Select(Millimetres));
         json.WriteEndObject();
     }
 

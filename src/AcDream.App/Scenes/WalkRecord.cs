@@ -64,6 +64,9 @@ internal sealed record WalkRecord(
     /// <summary>The scene's creatures' walks, in the scene's order.</summary>
     public IReadOnlyList<CreaturePath> Creatures { get; init; } = [];
 
+    /// <summary>What the player's moves saw, as the engine drew it (<see cref="FrameDrawing"/>), when the walk was drawn; empty otherwise.</summary>
+    public IReadOnlyList<DrawnLine> Drawn { get; init; } = [];
+
     /// <summary>The movers the player's moves touched, frame by frame (each mover once a frame).</summary>
     public IReadOnlyList<MoverTouch> Touches { get; init; } = [];
 

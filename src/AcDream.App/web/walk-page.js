@@ -20,6 +20,13 @@ function undelta(values) {
 const frameNumber = undelta(frames.frame);
 const px = undelta(frames.x), py = undelta(frames.y), pz = undelta(frames.z);
 const ex = undelta(frames.eyeX), ey = undelta(frames.eyeY), ez = undelta(frames.eyeZ);
+// What the engine drew for each frame's move (PhysicsEngine.DrawMove): the segments of frame f are drawnAt[f] .. drawnAt[f] + drawnCount[f).
+const drawnFrame = undelta(data.drawn.frame);
+const drawnAt = new Map(), drawnCount = new Map();
+drawnFrame.forEach((f, k) => {
+  if (!drawnAt.has(f)) drawnAt.set(f, k);
+  drawnCount.set(f, (drawnCount.get(f) || 0) + 1);
+});
 const creatures = data.creatures.map((c) => ({ id: c.id, frame: undelta(c.frame), x: undelta(c.x), y: undelta(c.y), z: undelta(c.z) }));
 
 const mmText = (mm) => (mm / 1000).toFixed(3);
@@ -185,6 +192,12 @@ function buildScene() {
   const floorMark = new THREE.Mesh(new THREE.BufferGeometry(), new THREE.MeshBasicMaterial({ color: 0x43a047, transparent: true, opacity: 0.7, side: THREE.DoubleSide, depthTest: false }));
   scene.add(wallArrow, floorArrow, wallMark, floorMark);
 
+  // What the engine drew for the frame's move, in the colours of its kinds (the legend names them).
+  const drawColours = { SubStep: 0x1e88e5, Contact: 0xe53935, Floor: 0x43a047, Support: 0x8e24aa, Edge: 0xfb8c00, Ceiling: 0x6d4c41 };
+  const drawn = new THREE.LineSegments(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ vertexColors: true, depthTest: false }));
+  drawn.renderOrder = 2;
+  scene.add(drawn);
+
   // The view: orbiting the player (drag, wheel), or through the chase camera's eye.
   const orbit = { azimuth: -2.2, elevation: 0.9, distance: 13 };
   const eyeView = document.getElementById('eyeView');
@@ -236,6 +249,7 @@ function buildScene() {
     }
     contact('wall', i, feet, wallArrow, wallMark);
     contact('floor', i, feet, floorArrow, floorMark);
+    drawFrame(f);
 
     const width = view.clientWidth, height = view.clientHeight;
     renderer.setSize(width, height);
@@ -253,6 +267,22 @@ function buildScene() {
     cutAway.constant = feet.z + data.height + 0.8;
     renderer.clippingPlanes = cut.checked ? [cutAway] : [];
     renderer.render(scene, camera);
+  }
+
+  /** Loads frame f's drawn segments into the line set. */
+  function drawFrame(f) {
+    const at = drawnAt.get(f) ?? 0, n = drawnCount.get(f) ?? 0;
+    const positions = new Float32Array(6 * n), colours = new Float32Array(6 * n);
+    const colour = new THREE.Color();
+    for (let k = 0; k < n; k++) {
+      for (let j = 0; j < 6; j++) positions[6 * k + j] = m(data.drawn.ends[6 * (at + k) + j]);
+      colour.setHex(drawColours[data.drawn.kinds[data.drawn.kind[at + k]]] ?? 0x000000);
+      for (let j = 0; j < 2; j++) colours.set([colour.r, colour.g, colour.b], 6 * k + 3 * j);
+    }
+    drawn.geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+    drawn.geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
+    drawn.geometry.computeBoundingSphere();
+    text('drawn', `drawn by the engine: ${n} segments (blue sub-steps, red contacts, green floor, purple support, orange edge, brown ceiling)`);
   }
 
   /** The arrow along the contact's normal at the body's side (a wall) or its feet (a floor), and the polygon met. */

@@ -112,6 +112,12 @@ public sealed class Character
     /// </summary>
     public ReadOnlySpan<Vector3> SlideNormals => _slides.AsSpan(0, _slideCount);
 
+    /// <summary>
+    /// Where each step's move draws what it saw (<see cref="PhysicsEngine.DrawMove"/>: its sub-steps, contacts, floor or
+    /// support, edge, ceiling), the answers unchanged; null (the default): nothing drawn, one untaken branch a step.
+    /// </summary>
+    public IDebugSink? DebugSink { get; set; }
+
     /// <summary>Whether it can jump: its effects move the body vertically (<see cref="MovementOptions.Vertical"/> with a body).</summary>
     public bool CanJump => _vertical;
 
@@ -279,13 +285,13 @@ public sealed class Character
         var request = new MoveRequest(position, _now.CellId, delta, Settings.StepUpHeight) { Options = options, MoverId = Settings.MoverId, WithReport = true };
         if (Settings.MoverId == 0 || touched.IsEmpty)
         {
-            MoveResult plain = _engine.Resolve(in request);
+            MoveResult plain = DebugSink is IDebugSink drawn ? _engine.DrawMove(in request, drawn) : _engine.Resolve(in request);
             report = plain.Report;
             return plain.Answer;
         }
 
         Span<uint> step = stackalloc uint[StepTouches];
-        MoveResult result = _engine.Resolve(in request, step);
+        MoveResult result = DebugSink is IDebugSink sink ? _engine.DrawMove(in request, sink, step) : _engine.Resolve(in request, step);
         foreach (uint id in step[..Math.Min(result.TouchedCount, StepTouches)])
         {
             if (frame.TouchedCount < touched.Length && !touched[..frame.TouchedCount].Contains(id))

@@ -4,7 +4,7 @@ namespace AcDream.Core.Physics;
 
 /// <summary>
 /// Where the engine draws what it has and what a move saw (<see cref="PhysicsEngine.DrawNear{TSink}(Vector3, uint, float, ref TSink)"/>,
-/// <see cref="PhysicsEngine.DrawMove(in MoveRequest, IDebugSink)"/>): the caller implements it and routes the lines and
+/// <see cref="PhysicsEngine.DrawMove(in MoveRequest, IDebugSink, Span{uint})"/>): the caller implements it and routes the lines and
 /// triangles to its own renderer.
 /// </summary>
 /// <remarks>

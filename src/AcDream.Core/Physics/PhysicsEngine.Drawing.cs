@@ -106,10 +106,11 @@ public sealed partial class PhysicsEngine
     /// </remarks>
     /// <param name="request">The move, as for <c>Resolve</c>.</param>
     /// <param name="sink">Where to draw.</param>
-    /// <returns>The answer of <c>Resolve(in request)</c>.</returns>
+    /// <param name="touched">As <c>Resolve</c>'s: where to write the movers touched (empty: none looked for).</param>
+    /// <returns>The answer of <c>Resolve(in request, touched)</c>.</returns>
     /// <exception cref="ArgumentNullException"><paramref name="sink"/> is null.</exception>
     /// <exception cref="ArgumentException">As <c>Resolve</c>.</exception>
-    public MoveResult DrawMove(in MoveRequest request, IDebugSink sink)
+    public MoveResult DrawMove(in MoveRequest request, IDebugSink sink, Span<uint> touched = default)
     {
         ArgumentNullException.ThrowIfNull(sink);
         MoveQuery.Validate(in request);
@@ -118,7 +119,7 @@ public sealed partial class PhysicsEngine
         MoveDrawing.Begin(sink, request.MoverId, request.Position);
         try
         {
-            moved = Resolve(in request);
+            moved = Resolve(in request, touched);
         }
         finally
         {
