@@ -188,7 +188,7 @@ public sealed partial class PhysicsEngine
         var lands = new Neighbourhood(_registry);
         if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MathF.Abs(delta.X) + MathF.Abs(delta.Y) + 0.05f, 0))
         {
-            return Held<Literal, ResolveResult>(ref lands, new Literal(currentPos, currentCellId, delta, stepUpHeight));
+            return HeldLiteral(ref lands, currentPos, currentCellId, delta, stepUpHeight);
         }
 
         MovementOptions none = default; // no effects: the spec's engine
@@ -223,11 +223,24 @@ public sealed partial class PhysicsEngine
         var lands = new Neighbourhood(_registry);
         if (_movers.Any && lands.Meet(_movers, in _frame, currentPos, currentCellId, MoverReach(delta, in options), 0))
         {
-            return Held<Optioned, ResolveResult>(ref lands, new Optioned(currentPos, currentCellId, delta, stepUpHeight, in options, 0));
+            return HeldOptioned(ref lands, new MoveRequest(currentPos, currentCellId, delta, stepUpHeight) { Options = options });
         }
 
         var query = new MoveQuery(ref lands, currentPos, currentCellId, new Vector2(delta.X, delta.Y), stepUpHeight, in options);
         return Move(ref query, in options, delta.Z);
+    }
+
+    /// <summary>The literal call's held path, out of line so the call with no mover near keeps a small frame.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private ResolveResult HeldLiteral(ref Neighbourhood lands, Vector3 position, uint cellId, Vector3 delta, float stepUp) =>
+        Held<Literal, ResolveResult>(ref lands, new Literal(position, cellId, delta, stepUp));
+
+    /// <summary>The options call's held path, out of line as the literal one's.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private ResolveResult HeldOptioned(ref Neighbourhood lands, in MoveRequest move)
+    {
+        MovementOptions options = move.Options;
+        return Held<Optioned, ResolveResult>(ref lands, new Optioned(move.Position, move.CellId, move.Delta, move.StepUpHeight, in options, 0));
     }
 
     private static (int X, int Y) CheckedCentre(uint centerLandblockId)
