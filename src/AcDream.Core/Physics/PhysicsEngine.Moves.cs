@@ -18,6 +18,19 @@ public sealed partial class PhysicsEngine
         options.InThreeD ? _motion.Resolve(ref query, dz) : _motion.Horizontal(ref query);
 
     /// <summary>The spec's call (<see cref="Resolve(Vector3, uint, Vector3, float)"/>): no effects, not a mover; checked again when movers are held.</summary>
+    /// <summary>The literal call's held path, out of line so the call with no mover near keeps a small frame.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private ResolveResult HeldLiteral(ref Neighbourhood lands, Vector3 position, uint cellId, Vector3 delta, float stepUp) =>
+        Held<Literal, ResolveResult>(ref lands, new Literal(position, cellId, delta, stepUp));
+
+    /// <summary>The options call's held path, out of line as the literal one's.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private ResolveResult HeldOptioned(ref Neighbourhood lands, in MoveRequest move)
+    {
+        MovementOptions options = move.Options;
+        return Held<Optioned, ResolveResult>(ref lands, new Optioned(move.Position, move.CellId, move.Delta, move.StepUpHeight, in options, 0));
+    }
+
     private readonly struct Literal(Vector3 position, uint cellId, Vector3 delta, float stepUp) : IQueryBody<ResolveResult>
     {
         public void Validate() => MoveQuery.Validate(position, cellId, delta, stepUp);

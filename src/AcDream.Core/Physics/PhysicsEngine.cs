@@ -230,19 +230,6 @@ public sealed partial class PhysicsEngine
         return Move(ref query, in options, delta.Z);
     }
 
-    /// <summary>The literal call's held path, out of line so the call with no mover near keeps a small frame.</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private ResolveResult HeldLiteral(ref Neighbourhood lands, Vector3 position, uint cellId, Vector3 delta, float stepUp) =>
-        Held<Literal, ResolveResult>(ref lands, new Literal(position, cellId, delta, stepUp));
-
-    /// <summary>The options call's held path, out of line as the literal one's.</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private ResolveResult HeldOptioned(ref Neighbourhood lands, in MoveRequest move)
-    {
-        MovementOptions options = move.Options;
-        return Held<Optioned, ResolveResult>(ref lands, new Optioned(move.Position, move.CellId, move.Delta, move.StepUpHeight, in options, 0));
-    }
-
     private static (int X, int Y) CheckedCentre(uint centerLandblockId)
     {
         CellIds.ValidateLandblockId(centerLandblockId, nameof(centerLandblockId));
