@@ -67,7 +67,7 @@ public sealed partial class PhysicsEngine
     /// The cast's own part: checked, the movers near its path held (<see cref="Neighbourhood.MeetAlong"/>), then its walk
     /// from the start's cell; a start whose land is not loaded is stopped where it is.
     /// </summary>
-    private readonly ref struct Casting(ref readonly CastRequest request) : IQueryBody<CastHit>
+    private readonly ref struct Casting(ref readonly CastRequest request) : IHeldBody<CastHit>
     {
         private readonly ref readonly CastRequest _request = ref request;
 
@@ -82,9 +82,6 @@ public sealed partial class PhysicsEngine
             }
         }
 
-        public void Begin(PhysicsEngine engine)
-        {
-        }
 
         public bool Meet(ref Neighbourhood lands, MoverRegistry movers, in WorldFrame frame)
         {

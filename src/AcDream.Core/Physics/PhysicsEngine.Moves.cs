@@ -28,21 +28,11 @@ public sealed partial class PhysicsEngine
     private ResolveResult HeldOptioned(ref Neighbourhood lands, in MoveRequest move)
     {
         MovementOptions options = move.Options;
-        return Held<Optioned, ResolveResult>(ref lands, new Optioned(move.Position, move.CellId, move.Delta, move.StepUpHeight, in options, 0));
+        return Held<Optioned, ResolveResult>(ref lands, new Optioned(move.Position, move.CellId, move.Delta, move.StepUpHeight, in options));
     }
 
-    private readonly struct Literal(Vector3 position, uint cellId, Vector3 delta, float stepUp) : IQueryBody<ResolveResult>
+    private readonly struct Literal(Vector3 position, uint cellId, Vector3 delta, float stepUp) : IHeldBody<ResolveResult>
     {
-        public void Validate() => MoveQuery.Validate(position, cellId, delta, stepUp);
-
-        public void Begin(PhysicsEngine engine)
-        {
-        }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public bool Meet(ref Neighbourhood lands, MoverRegistry movers, in WorldFrame frame) =>
-            lands.Meet(movers, in frame, position, cellId, MathF.Abs(delta.X) + MathF.Abs(delta.Y) + 0.05f, 0); // (MoverReach with no effects)
-
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public ResolveResult Run(PhysicsEngine engine, ref Neighbourhood lands, bool held)
         {
@@ -53,29 +43,19 @@ public sealed partial class PhysicsEngine
         }
     }
 
-    /// <summary>The call with options, as the mover <c>self</c> (0: none).</summary>
-    private readonly ref struct Optioned : IQueryBody<ResolveResult>
+    /// <summary>The held part of the call with options.</summary>
+    private readonly ref struct Optioned : IHeldBody<ResolveResult>
     {
         private readonly ref readonly MovementOptions _options;
         private readonly Vector3 _position, _delta;
-        private readonly uint _cellId, _self;
+        private readonly uint _cellId;
         private readonly float _stepUp;
 
-        public Optioned(Vector3 position, uint cellId, Vector3 delta, float stepUp, ref readonly MovementOptions options, uint self)
+        public Optioned(Vector3 position, uint cellId, Vector3 delta, float stepUp, ref readonly MovementOptions options)
         {
             _options = ref options;
-            (_position, _cellId, _delta, _stepUp, _self) = (position, cellId, delta, stepUp, self);
+            (_position, _cellId, _delta, _stepUp) = (position, cellId, delta, stepUp);
         }
-
-        public void Validate() => MoveQuery.Validate(_position, _cellId, _delta, _stepUp);
-
-        public void Begin(PhysicsEngine engine)
-        {
-        }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public bool Meet(ref Neighbourhood lands, MoverRegistry movers, in WorldFrame frame) =>
-            lands.Meet(movers, in frame, _position, _cellId, MoverReach(_delta, in _options), _self);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public ResolveResult Run(PhysicsEngine engine, ref Neighbourhood lands, bool held)

@@ -12,7 +12,7 @@ public sealed partial class PhysicsEngine
     /// A query's own part, run by <see cref="Query{TBody, TResult}"/>: a struct (a ref struct when it holds references to
     /// the caller's arguments), so each query's preamble is compiled for it with no call through the interface.
     /// </summary>
-    private interface IQueryBody<TResult>
+    private interface IQueryBody<TResult> : IHeldBody<TResult>
     {
         /// <summary>Checks the arguments: an <see cref="ArgumentException"/> naming the one that is wrong.</summary>
         void Validate();
@@ -23,6 +23,11 @@ public sealed partial class PhysicsEngine
         /// <summary>Meets the movers near the query's start in <paramref name="lands"/> (<see cref="Neighbourhood.Meet"/> or <see cref="Neighbourhood.MeetAlong"/>): whether it holds them.</summary>
         bool Meet(ref Neighbourhood lands, MoverRegistry movers, in WorldFrame frame);
 
+    }
+
+    /// <summary>A query's part run with movers held (<see cref="Held{TBody, TResult}"/>): the calls that write the preamble out use only this.</summary>
+    private interface IHeldBody<TResult>
+    {
         /// <summary>The query itself, in <paramref name="lands"/>; <paramref name="held"/>: with movers held.</summary>
         TResult Run(PhysicsEngine engine, ref Neighbourhood lands, bool held);
     }
@@ -47,7 +52,7 @@ public sealed partial class PhysicsEngine
     /// <summary>A query that holds movers: its part, and the hold let go whatever happens.</summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // kept out of the query: a call with no mover near has no handler to set up
     private TResult Held<TBody, TResult>(ref Neighbourhood lands, scoped in TBody body)
-        where TBody : IQueryBody<TResult>, allows ref struct
+        where TBody : IHeldBody<TResult>, allows ref struct
     {
         try
         {
