@@ -50,15 +50,31 @@ public sealed partial class PhysicsEngine
     /// <param name="request">Where it starts (world metres), its cell (<c>0xXXYYCCCC</c>; an outdoor number, 0 included, is recomputed from the position), the centre's displacement, the radius (metres, 0 to <see cref="PhysicsConstants.MaxCastRadius"/>), filters and the mover it ignores. The start's cell is not always the cell <c>Resolve</c> names for a mover whose start is above its feet: a body in the air over a floor opening is in the cell below, a pivot over its head may be in the cell above; find it with <see cref="FindCell"/>.</param>
     /// <exception cref="ArgumentOutOfRangeException">The radius is more than <see cref="PhysicsConstants.MaxCastRadius"/> (named <c>request</c>).</exception>
     /// <exception cref="ArgumentException">A position or the delta is not finite (or the end overflows), the radius is negative or not finite, the cell id is not a cell of the world, or an indoor cell is not in its loaded landblock; each named <c>request</c>, with the field.</exception>
-    public CastHit Cast(in CastRequest request)
+    public CastHit Cast(in CastRequest request) => _recorder is null ? Casted(in request) : Recorded(in request);
+
+    /// <summary>
+    /// The cast itself. The preamble is written out (Query's, with Casting's parts): measured, the generic form costs the
+    /// camera's cast 7–10 %.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private CastHit Casted(in CastRequest request)
     {
-        // The preamble written out (Query's, with Casting's parts): measured, the generic form costs the camera's cast 7–10 %.
         var body = new Casting(in request);
         body.Validate();
         var lands = new Neighbourhood(_registry);
-        CastHit hit = _movers.Any && body.Meet(ref lands, _movers, in _frame)
+        return _movers.Any && body.Meet(ref lands, _movers, in _frame)
             ? Held<Casting, CastHit>(ref lands, in body)
             : body.Run(this, ref lands, held: false);
+    }
+
+    /// <summary>
+    /// A cast with a recorder set, out of line: the unrecorded cast then returns its answer straight (measured, handing the
+    /// recorder a reference to the answer in the same method made the camera's cast about 5 % slower).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private CastHit Recorded(in CastRequest request)
+    {
+        CastHit hit = Casted(in request);
         _recorder?.Cast(in request, in hit);
         return hit;
     }

@@ -36,6 +36,11 @@ public sealed partial class PhysicsEngine
 #pragma warning disable RS0027 // (the spec's four-argument Resolve has no optional parameter to clash with; one general call reads best with the span optional)
     public MoveResult Resolve(in MoveRequest request, Span<uint> touched = default)
 #pragma warning restore RS0027
+        => _recorder is null ? Query<Requested, MoveResult>(new Requested(in request, touched)) : Recorded(in request, touched);
+
+    /// <summary>The general move with a recorder set, out of line as the cast's (<see cref="Recorded(in CastRequest)"/>).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private MoveResult Recorded(in MoveRequest request, Span<uint> touched)
     {
         MoveResult result = Query<Requested, MoveResult>(new Requested(in request, touched));
         _recorder?.Resolved(in request, touched, in result);
