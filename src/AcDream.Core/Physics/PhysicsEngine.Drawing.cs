@@ -72,7 +72,7 @@ public sealed partial class PhysicsEngine
                 if (_registry.Get(x + dx, y + dy) is LandblockEntry entry)
                 {
                     var shift = new Vector2(dx * PhysicsConstants.LandblockSize, dy * PhysicsConstants.LandblockSize);
-                    NearDrawing.Landblock(in _frame, entry, local - half - shift, local + half - shift, ref sink);
+                    NearDrawing.Landblock(in _frame, entry, new NearDrawing.Box(local - half - shift, local + half - shift), ref sink);
                 }
             }
         }
@@ -82,7 +82,7 @@ public sealed partial class PhysicsEngine
         {
             if (movers is not null)
             {
-                NearDrawing.Movers(in _frame, movers, x, y, local - half, local + half, ref sink);
+                NearDrawing.Movers(in _frame, movers, x, y, new NearDrawing.Box(local - half, local + half), ref sink);
             }
         }
         finally

@@ -133,7 +133,7 @@ public sealed partial class PhysicsEngine
                 // Held by a floor under its footprint, not the ground under its centre.
                 const float tolerance = PhysicsConstants.GroundTolerance;
                 float reach = options.Body!.Value.Radius * PhysicsConstants.SupportReach;
-                Support support = Supports.Highest(ref lands, in place, -1, place.Local, reach, result.Position.Z - tolerance, result.Position.Z + tolerance);
+                Support support = Supports.Highest(ref lands, in place, -1, new Footprint(place.Local, reach, result.Position.Z - tolerance, result.Position.Z + tolerance));
                 floor = support.Found ? support.Floor : floor;
             }
         }

@@ -203,7 +203,7 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
 
             // In the air, the floors of the other cells of its building too: a body over the edge of an opening or a doorway's
             // threshold is held by the floor beyond it, whichever cell its centre was found in.
-            Support support = Supports.Highest(ref q.Lands, in place, start, place.Local, reach, low, MathF.Max(feet, z) + q.StepUp, !result.IsOnGround);
+            Support support = Supports.Highest(ref q.Lands, in place, start, new Footprint(place.Local, reach, low, MathF.Max(feet, z) + q.StepUp), !result.IsOnGround);
             if (!support.Found || (result.IsOnGround && !(support.Z > z)))
             {
                 return result;
@@ -253,7 +253,7 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
         }
 
         if (q.Options.Footing
-            && Supports.Highest(ref q.Lands, in place, -1, place.Local, q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach, q.Z - tolerance, q.Z + tolerance).Found)
+            && Supports.Highest(ref q.Lands, in place, -1, new Footprint(place.Local, q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach, q.Z - tolerance, q.Z + tolerance)).Found)
         {
             return true;
         }
@@ -283,7 +283,7 @@ internal sealed class BodyMotion(WorldFrame frame, PointMover point, BodyResolve
         // The end in the start's frame: the start's local point plus the move's rounded displacement.
         Vector2 to = place.Local + new Vector2(off.Position.X - q.Position.X, off.Position.Y - q.Position.Y);
         float reach = q.Options.Body!.Value.Radius * PhysicsConstants.SupportReach;
-        Vector2 outward = Supports.EdgeNormal(ref q.Lands, in place, -1, place.Local, to, reach, q.Z, out SurfaceContact edge, out Vector2 nearest);
+        (Vector2 outward, SurfaceContact edge, Vector2 nearest) = Supports.Edge(ref q.Lands, in place, place.Local, to, reach, q.Z);
         q.Meet(SurfaceKind.FloorEdge, edge.Id);
         if (MoveDrawing.On)
         {

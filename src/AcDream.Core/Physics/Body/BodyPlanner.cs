@@ -197,7 +197,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         }
 
         var hit = new CeilingHit { Z = top + dz };
-        Around(ref q, in place, new BodyRise(place.Local, body.Radius, top), top - PhysicsConstants.ContactTolerance, top + dz, steep: false, ref hit);
+        Around(ref q, in place, new BodyRise(place.Local, body.Radius, top), (top - PhysicsConstants.ContactTolerance, top + dz), steep: false, ref hit);
         if (hit.Source.Kind == SurfaceKind.None)
         {
             return dz;
@@ -226,7 +226,7 @@ internal sealed class BodyPlanner(WorldFrame frame)
         }
 
         var hit = new CeilingHit { Z = position.Z - depth };
-        Around(ref q, in place, new BodyRise(place.Local, body.Radius, position.Z), position.Z - depth, position.Z, steep: true, ref hit);
+        Around(ref q, in place, new BodyRise(place.Local, body.Radius, position.Z), (position.Z - depth, position.Z), steep: true, ref hit);
         if (hit.Source.Kind == SurfaceKind.None)
         {
             return float.NaN;
@@ -237,15 +237,15 @@ internal sealed class BodyPlanner(WorldFrame frame)
     }
 
     /// <summary>
-    /// The surfaces over (or, <paramref name="steep"/>, the steep faces under) the disc <paramref name="disc"/> in the band
-    /// <paramref name="zLow"/>–<paramref name="zHigh"/>, among the cells and objects around <paramref name="place"/>, into <paramref name="hit"/>.
+    /// The surfaces over (or, <paramref name="steep"/>, the steep faces under) the disc <paramref name="disc"/> in the height
+    /// band <paramref name="band"/> (metres), among the cells and objects around <paramref name="place"/>, into <paramref name="hit"/>.
     /// </summary>
     [SkipLocalsInit] // the stack buffer is written before it is read
-    private static void Around(ref MoveQuery q, in Place place, in BodyRise disc, float zLow, float zHigh, bool steep, ref CeilingHit hit)
+    private static void Around(ref MoveQuery q, in Place place, in BodyRise disc, (float Low, float High) band, bool steep, ref CeilingHit hit)
     {
         Span<int> sources = stackalloc int[PhysicsConstants.BodySources];
         var reach = new Vector2(disc.Radius + PhysicsConstants.ContactTolerance);
-        var walls = new WallSet(ref q.Lands, place.Entry, place.CellIndex, sources, new WallBox(place.Local - reach, place.Local + reach, zLow, zHigh));
+        var walls = new WallSet(ref q.Lands, place.Entry, place.CellIndex, sources, new WallBox(place.Local - reach, place.Local + reach, band.Low, band.High));
         if (steep)
         {
             walls.Steep(in disc, ref hit);

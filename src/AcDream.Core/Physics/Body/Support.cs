@@ -18,38 +18,49 @@ internal static class Supports
     private const float MaxFloorSlope = 1.126f;
 
     /// <summary>
-    /// The highest floor within <paramref name="reach"/> of <paramref name="p"/> (landblock-local to <paramref name="place"/>)
-    /// whose Z under <paramref name="p"/> (<see cref="FloorTriangle.UnderCentre"/>) is between <paramref name="low"/> and <paramref name="high"/>: indoors, the
-    /// floors of the place's cell, of cell <paramref name="alsoCell"/> (the move's start, when another; −1: none) and, with
-    /// <paramref name="building"/>, of the other cells of its building, with their objects'; outdoors, the outdoor objects' floors and the buildings' cells' floors, across seams too.
+    /// The highest floor within the footprint's reach of its centre (landblock-local to <paramref name="place"/>) whose Z
+    /// under the centre (<see cref="FloorTriangle.UnderCentre"/>) is in its band: indoors, the floors of the place's cell, of
+    /// cell <paramref name="alsoCell"/> (the move's start, when another; −1: none) and, with <paramref name="building"/>, of
+    /// the other cells of its building, with their objects'; outdoors, the outdoor objects' floors and the buildings' cells'
+    /// floors, across seams too.
     /// </summary>
-    public static Support Highest(ref Neighbourhood lands, in Place place, int alsoCell, Vector2 p, float reach, float low, float high, bool building = false)
+    public static Support Highest(ref Neighbourhood lands, in Place place, int alsoCell, in Footprint footprint, bool building = false)
     {
-        var scan = new HighestScan { Best = new Support { Z = float.NegativeInfinity, CellIndex = -1 }, P = p, Reach = reach, Low = low, High = high };
-        Visit(ref lands, in place, alsoCell, building, p - new Vector2(reach), p + new Vector2(reach), ref scan);
+        var scan = new HighestScan
+        {
+            Best = new Support { Z = float.NegativeInfinity, CellIndex = -1 }, P = footprint.Centre, Reach = footprint.Reach,
+            Low = footprint.Low, High = footprint.High,
+            Lo = footprint.Centre - new Vector2(footprint.Reach), Hi = footprint.Centre + new Vector2(footprint.Reach),
+        };
+        Visit(ref lands, in place, alsoCell, building, ref scan);
         return scan.Best;
     }
 
     /// <summary>
-    /// The outward unit normal, seen from above, of the edge a body left: among the floors within <paramref name="reach"/> of
-    /// <paramref name="start"/> whose Z there is within the ground tolerance of <paramref name="level"/> (what it stood on),
-    /// the one nearest <paramref name="end"/>, from its nearest point to <paramref name="end"/>. Zero when none is, or
-    /// <paramref name="end"/> is over it. <paramref name="floor"/>: whose floor it is; <paramref name="nearest"/>: its point nearest <paramref name="end"/>.
+    /// The edge a body left: among the floors within <paramref name="reach"/> of <paramref name="start"/> whose Z there is
+    /// within the ground tolerance of <paramref name="level"/> (what it stood on), the one nearest <paramref name="end"/>;
+    /// its outward unit normal seen from above, from its nearest point to <paramref name="end"/> (zero when none is, or
+    /// <paramref name="end"/> is over it), whose floor it is and that nearest point.
     /// </summary>
-    public static Vector2 EdgeNormal(ref Neighbourhood lands, in Place place, int alsoCell, Vector2 start, Vector2 end, float reach, float level, out SurfaceContact floor, out Vector2 nearest)
+    public static LeftEdge Edge(ref Neighbourhood lands, in Place place, Vector2 start, Vector2 end, float reach, float level)
     {
-        var scan = new EdgeScan { Start = start, End = end, Reach = reach, Level = level, Distance = float.PositiveInfinity };
-        Visit(ref lands, in place, alsoCell, false, Vector2.Min(start, end) - new Vector2(reach), Vector2.Max(start, end) + new Vector2(reach), ref scan);
+        var scan = new EdgeScan
+        {
+            Start = start, End = end, Reach = reach, Level = level, Distance = float.PositiveInfinity,
+            Lo = Vector2.Min(start, end) - new Vector2(reach), Hi = Vector2.Max(start, end) + new Vector2(reach),
+        };
+        Visit(ref lands, in place, -1, false, ref scan);
         Vector2 away = end - scan.Nearest;
-        (floor, nearest) = (scan.Floor, scan.Nearest);
-        return scan.Distance < float.PositiveInfinity && away != Vector2.Zero ? Vector2.Normalize(away) : Vector2.Zero;
+        Vector2 normal = scan.Distance < float.PositiveInfinity && away != Vector2.Zero ? Vector2.Normalize(away) : Vector2.Zero;
+        return new LeftEdge(normal, scan.Floor, scan.Nearest);
     }
 
-    /// <summary>Hands every floor whose bounds meet the box <paramref name="lo"/>–<paramref name="hi"/> to <paramref name="scan"/>, with the offset of its frame.</summary>
-    private static void Visit<T>(ref Neighbourhood lands, in Place place, int alsoCell, bool building, Vector2 lo, Vector2 hi, ref T scan)
+    /// <summary>Hands every floor whose bounds meet the scan's box (<see cref="IFloorScan.Lo"/>–<see cref="IFloorScan.Hi"/>) to <paramref name="scan"/>, with the offset of its frame.</summary>
+    private static void Visit<T>(ref Neighbourhood lands, in Place place, int alsoCell, bool building, ref T scan)
         where T : struct, IFloorScan
     {
         LandblockEntry entry = place.Entry;
+        Vector2 lo = scan.Lo, hi = scan.Hi;
         if (place.CellIndex >= 0)
         {
             Cell(entry, place.CellIndex, ref scan);
@@ -143,6 +154,12 @@ internal static class Supports
     /// <summary>What is done with each floor near the body (its triangles in a frame <c>offset</c> from the body's).</summary>
     private interface IFloorScan
     {
+        /// <summary>The south-west corner of the box the floors are looked for in (landblock-local metres).</summary>
+        Vector2 Lo { get; }
+
+        /// <summary>Its north-east corner.</summary>
+        Vector2 Hi { get; }
+
         /// <summary>Whether floors between the two heights may matter (a whole cell's or object's are skipped when not).</summary>
         bool Spans(float zMin, float zMax);
 
@@ -152,6 +169,8 @@ internal static class Supports
     /// <summary>Keeps the highest floor within reach between the two heights.</summary>
     private struct HighestScan : IFloorScan
     {
+        public Vector2 Lo { get; init; }
+        public Vector2 Hi { get; init; }
         public Support Best;
         public Vector2 P;
         public float Reach;
@@ -185,6 +204,8 @@ internal static class Supports
     /// <summary>Keeps the floor at the level stood on nearest the end.</summary>
     private struct EdgeScan : IFloorScan
     {
+        public Vector2 Lo { get; init; }
+        public Vector2 Hi { get; init; }
         public Vector2 Start;
         public Vector2 End;
         public float Reach;
@@ -216,6 +237,18 @@ internal static class Supports
         }
     }
 }
+
+/// <summary>
+/// What <see cref="Supports.Highest"/> looks for: the floors within <see cref="Reach"/> of <see cref="Centre"/> seen from
+/// above (landblock-local metres) whose Z under the centre is between <see cref="Low"/> and <see cref="High"/>.
+/// </summary>
+internal readonly record struct Footprint(Vector2 Centre, float Reach, float Low, float High);
+
+/// <summary>
+/// The edge of the floor a body left (<see cref="Supports.Edge"/>): its outward unit normal seen from above (zero for
+/// none), whose floor it is, and its point nearest where the body went (landblock-local metres).
+/// </summary>
+internal readonly record struct LeftEdge(Vector2 Normal, SurfaceContact Floor, Vector2 Nearest);
 
 /// <summary>A floor under a body's footprint: its Z (metres), whether found, what it is (kind, id, normal), and the indoor cell that holds it (−1 outdoors).</summary>
 internal struct Support

@@ -131,14 +131,19 @@ internal static partial class WorldCast
             }
         }
 
-        /// <summary>The earliest fraction in t0..t1 at which the centre passes in through a doorway of a cell over terrain cell (cx, cy) of <paramref name="entry"/>; +∞ for none.</summary>
-        private static double Doorway(in SweptSphere ray, LandblockEntry entry, D3 offset, int cx, int cy, double t0, double t1, double slack, out int cell)
+        /// <summary>
+        /// The earliest fraction in the stretch's <c>T0</c>..<c>T1</c> at which the centre passes in through a doorway of a
+        /// cell over terrain cell (cx, cy) of <paramref name="entry"/>, and that cell's index; +∞ and −1 for none. A doorway
+        /// at the stretch's start counts within its <c>Slack</c> (metres) beyond its plane (<see cref="Piece.Slack"/>).
+        /// </summary>
+        private static (double T, int Cell) Doorway(in SweptSphere ray, LandblockEntry entry, D3 offset, int cx, int cy, (double T0, double T1, double Slack) stretch)
         {
-            cell = -1;
+            (double t0, double t1, double slack) = stretch;
+            int cell = -1;
             double best = double.PositiveInfinity;
             if ((uint)cx >= PhysicsConstants.CellsPerSide || (uint)cy >= PhysicsConstants.CellsPerSide)
             {
-                return best;
+                return (best, cell);
             }
 
             foreach (int c in entry.EntryBuckets[(cx * PhysicsConstants.CellsPerSide) + cy])
@@ -160,7 +165,7 @@ internal static partial class WorldCast
                 }
             }
 
-            return best;
+            return (best, cell);
         }
     }
 }

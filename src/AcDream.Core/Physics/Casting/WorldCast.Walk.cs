@@ -195,7 +195,7 @@ internal static partial class WorldCast
                 Terrain(ref ray, ref lands, t0, t1);
                 Things(ref ray, ref lands, entry, offset, in box);
                 Movers(ref ray, ref lands, entry, offset, in box);
-                double door = Doorway(in ray, entry, offset, cx - ((lx - _x0) * PhysicsConstants.CellsPerSide), cy - ((ly - _y0) * PhysicsConstants.CellsPerSide), t0, t1, piece.Slack, out int cell);
+                (double door, int cell) = Doorway(in ray, entry, offset, cx - ((lx - _x0) * PhysicsConstants.CellsPerSide), cy - ((ly - _y0) * PhysicsConstants.CellsPerSide), (t0, t1, piece.Slack));
                 if (door < ray.T && door <= t1)
                 {
                     // In through a doorway: every contact found is later than it, and what the centre meets from here is the

@@ -35,7 +35,7 @@ internal static class FootingDrawing
         {
             const float tolerance = PhysicsConstants.GroundTolerance;
             float reach = options.Body!.Value.Radius * PhysicsConstants.SupportReach;
-            Support support = Supports.Highest(ref lands, in place, -1, place.Local, reach, result.Position.Z - tolerance, result.Position.Z + tolerance);
+            Support support = Supports.Highest(ref lands, in place, -1, new Footprint(place.Local, reach, result.Position.Z - tolerance, result.Position.Z + tolerance));
             if (support.Found)
             {
                 Held(in at, place.Entry, in support, place.Local, reach, ref sink);

@@ -18,29 +18,29 @@ internal static class NearDrawing
     /// <summary>How many sides a cylinder is drawn with.</summary>
     public const int CylinderSides = 12;
 
-    /// <summary>The landblock <paramref name="entry"/>'s surfaces that meet <paramref name="lo"/>..<paramref name="hi"/> (its frame).</summary>
-    public static void Landblock<TSink>(in WorldFrame frame, LandblockEntry entry, Vector2 lo, Vector2 hi, ref TSink sink)
+    /// <summary>The landblock <paramref name="entry"/>'s surfaces that meet <paramref name="box"/> (its frame).</summary>
+    public static void Landblock<TSink>(in WorldFrame frame, LandblockEntry entry, Box box, ref TSink sink)
         where TSink : IDebugSink
     {
         var at = new At(frame, entry.X, entry.Y);
-        Terrain(in at, entry.Terrain, lo, hi, ref sink);
+        Terrain(in at, entry.Terrain, box, ref sink);
         CellSurface[] cells = entry.Cells;
         for (int i = 0; i < cells.Length; i++)
         {
             CellSurface cell = cells[i];
             WallBounds bounds = entry.CellWallBounds[i];
-            bool walls = Meets(bounds.Min, bounds.Max, lo, hi);
-            bool floors = cell.HasFloor && Meets(cell.FloorMin, cell.FloorMax, lo, hi);
+            bool walls = box.Meets(bounds.Min, bounds.Max);
+            bool floors = cell.HasFloor && box.Meets(cell.FloorMin, cell.FloorMax);
             if (!walls && !floors)
             {
                 continue;
             }
 
-            Floors(in at, cell.Floors, lo, hi, DrawKind.CellFloor, cell.CellId, ref sink);
-            Walls(in at, cell.Walls, lo, hi, DrawKind.CellWall, cell.CellId, ref sink);
+            Floors(in at, cell.Floors, box, DrawKind.CellFloor, cell.CellId, ref sink);
+            Walls(in at, cell.Walls, box, DrawKind.CellWall, cell.CellId, ref sink);
             foreach (PortalShape portal in cell.PortalShapes)
             {
-                if (Meets(portal.BoundsMin, portal.BoundsMax, lo, hi))
+                if (box.Meets(portal.BoundsMin, portal.BoundsMax))
                 {
                     Portal(in at, portal, cell.CellId, ref sink);
                 }
@@ -48,18 +48,18 @@ internal static class NearDrawing
 
             foreach (ObjectSurface o in cell.Objects)
             {
-                Object(in at, o, lo, hi, ref sink);
+                Object(in at, o, box, ref sink);
             }
         }
 
         foreach (ObjectSurface o in entry.OutdoorObjects)
         {
-            Object(in at, o, lo, hi, ref sink);
+            Object(in at, o, box, ref sink);
         }
     }
 
-    /// <summary>The committed movers (<paramref name="movers"/>) whose walls meet <paramref name="lo"/>..<paramref name="hi"/> (the frame of landblock x, y).</summary>
-    public static void Movers<TSink>(in WorldFrame frame, MoverFrame movers, int x, int y, Vector2 lo, Vector2 hi, ref TSink sink)
+    /// <summary>The committed movers (<paramref name="movers"/>) whose walls meet <paramref name="box"/> (the frame of landblock x, y).</summary>
+    public static void Movers<TSink>(in WorldFrame frame, MoverFrame movers, int x, int y, Box box, ref TSink sink)
         where TSink : IDebugSink
     {
         for (int i = 0; i < movers.Count; i++)
@@ -67,23 +67,23 @@ internal static class NearDrawing
             if (movers.TryOffset(i, x, y, out Vector2 offset, out _))
             {
                 var at = new At(frame, movers.LandblockX[i], movers.LandblockY[i]);
-                Walls(in at, movers.Walls[i], lo - offset, hi - offset, DrawKind.Mover, movers.Ids[i], ref sink);
+                Walls(in at, movers.Walls[i], box.Moved(-offset), DrawKind.Mover, movers.Ids[i], ref sink);
             }
         }
     }
 
     /// <summary>The two triangles of each outdoor cell meeting the box, split as the terrain's cell is.</summary>
-    private static void Terrain<TSink>(in At at, TerrainSurface terrain, Vector2 lo, Vector2 hi, ref TSink sink)
+    private static void Terrain<TSink>(in At at, TerrainSurface terrain, Box box, ref TSink sink)
         where TSink : IDebugSink
     {
         const float size = PhysicsConstants.CellSize;
-        if (hi.X < 0f || hi.Y < 0f || lo.X > PhysicsConstants.LandblockSize || lo.Y > PhysicsConstants.LandblockSize)
+        if (box.Hi.X < 0f || box.Hi.Y < 0f || box.Lo.X > PhysicsConstants.LandblockSize || box.Lo.Y > PhysicsConstants.LandblockSize)
         {
             return;
         }
 
-        int x0 = CellIds.OutdoorColumn(Math.Max(lo.X, 0f)), x1 = CellIds.OutdoorColumn(Math.Min(hi.X, PhysicsConstants.LandblockSize));
-        int y0 = CellIds.OutdoorColumn(Math.Max(lo.Y, 0f)), y1 = CellIds.OutdoorColumn(Math.Min(hi.Y, PhysicsConstants.LandblockSize));
+        int x0 = CellIds.OutdoorColumn(Math.Max(box.Lo.X, 0f)), x1 = CellIds.OutdoorColumn(Math.Min(box.Hi.X, PhysicsConstants.LandblockSize));
+        int y0 = CellIds.OutdoorColumn(Math.Max(box.Lo.Y, 0f)), y1 = CellIds.OutdoorColumn(Math.Min(box.Hi.Y, PhysicsConstants.LandblockSize));
         for (int cx = x0; cx <= x1; cx++)
         {
             for (int cy = y0; cy <= y1; cy++)
@@ -108,7 +108,7 @@ internal static class NearDrawing
         }
     }
 
-    private static void Object<TSink>(in At at, ObjectSurface o, Vector2 lo, Vector2 hi, ref TSink sink)
+    private static void Object<TSink>(in At at, ObjectSurface o, Box box, ref TSink sink)
         where TSink : IDebugSink
     {
         Vector2 min = new(o.BoundsMin.X, o.BoundsMin.Y), max = new(o.BoundsMax.X, o.BoundsMax.Y);
@@ -117,19 +117,19 @@ internal static class NearDrawing
             (min, max) = (Vector2.Min(min, o.FloorMin), Vector2.Max(max, o.FloorMax));
         }
 
-        if (Meets(min, max, lo, hi))
+        if (box.Meets(min, max))
         {
-            Floors(in at, o.Floors, lo, hi, DrawKind.ObjectFloor, o.ObjectId, ref sink);
-            Walls(in at, o.Walls, lo, hi, DrawKind.ObjectWall, o.ObjectId, ref sink);
+            Floors(in at, o.Floors, box, DrawKind.ObjectFloor, o.ObjectId, ref sink);
+            Walls(in at, o.Walls, box, DrawKind.ObjectWall, o.ObjectId, ref sink);
         }
     }
 
-    private static void Floors<TSink>(in At at, ReadOnlySpan<FloorTriangle> floors, Vector2 lo, Vector2 hi, DrawKind kind, uint id, ref TSink sink)
+    private static void Floors<TSink>(in At at, ReadOnlySpan<FloorTriangle> floors, Box box, DrawKind kind, uint id, ref TSink sink)
         where TSink : IDebugSink
     {
         foreach (ref readonly FloorTriangle t in floors)
         {
-            if (Meets(t.Min, t.Max, lo, hi))
+            if (box.Meets(t.Min, t.Max))
             {
                 Triangle(in at, in t, kind, id, ref sink);
             }
@@ -145,17 +145,17 @@ internal static class NearDrawing
     /// Each wall polygon's edges; a cylinder (<see cref="WallPolygon.Radius"/> &gt; 0) as <see cref="CylinderSides"/> uprights
     /// and the chords of its bottom and top rings (<see cref="DrawKind.Cylinder"/> unless <paramref name="kind"/> is a mover's).
     /// </summary>
-    private static void Walls<TSink>(in At at, CellWalls walls, Vector2 lo, Vector2 hi, DrawKind kind, uint id, ref TSink sink)
+    private static void Walls<TSink>(in At at, CellWalls walls, Box box, DrawKind kind, uint id, ref TSink sink)
         where TSink : IDebugSink
     {
-        if (walls.Polygons.Length == 0 || !Meets(walls.Min, walls.Max, lo, hi))
+        if (walls.Polygons.Length == 0 || !box.Meets(walls.Min, walls.Max))
         {
             return;
         }
 
         foreach (WallPolygon w in walls.Polygons)
         {
-            if (!Meets(w.Min, w.Max, lo, hi))
+            if (!box.Meets(w.Min, w.Max))
             {
                 continue;
             }
@@ -228,8 +228,15 @@ internal static class NearDrawing
         return new Vector2(portal.Origin.X, portal.Origin.Y) + (portal.Tangent * profile.X) + (across * (off / length));
     }
 
-    private static bool Meets(Vector2 min, Vector2 max, Vector2 lo, Vector2 hi) =>
-        min.X <= hi.X && max.X >= lo.X && min.Y <= hi.Y && max.Y >= lo.Y;
+    /// <summary>A box seen from above, in a landblock's frame (metres): what is drawn meets it.</summary>
+    public readonly record struct Box(Vector2 Lo, Vector2 Hi)
+    {
+        /// <summary>Whether bounds <paramref name="min"/>..<paramref name="max"/> meet the box (edges touching count).</summary>
+        public bool Meets(Vector2 min, Vector2 max) => min.X <= Hi.X && max.X >= Lo.X && min.Y <= Hi.Y && max.Y >= Lo.Y;
+
+        /// <summary>The same box moved by <paramref name="by"/>.</summary>
+        public Box Moved(Vector2 by) => new(Lo + by, Hi + by);
+    }
 
     /// <summary>A landblock's place in the world frame: landblock-local points to world.</summary>
     internal readonly struct At(WorldFrame frame, int x, int y)
