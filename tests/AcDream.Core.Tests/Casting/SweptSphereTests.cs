@@ -34,7 +34,7 @@ public class SweptSphereTests
     private static SweptSphere Polygon(D3[] v, D3 move, double radius, D3 start = default)
     {
         var s = new SweptSphere(start, move, radius);
-        s.Polygon(v, SurfaceKind.CellFloor, Id, SurfaceKind.CellWall);
+        s.Polygon(v, new(SurfaceKind.CellFloor, Id), SurfaceKind.CellWall);
         return s;
     }
 
@@ -212,9 +212,9 @@ public class SweptSphereTests
 
         // A contact kept at 0.1 is not replaced by the later edge or corner.
         var s = new SweptSphere(Origin, new D3(0, 0, -4), 0.5);
-        s.Stop(0.1, new D3(0, 1, 0), SurfaceKind.Terrain, 5);
-        s.Polygon(Square(-2, cx: -1.3), SurfaceKind.CellFloor, Id, SurfaceKind.CellWall);
-        s.Polygon(Square(-2, cx: -1.3, cy: -1.3), SurfaceKind.CellFloor, Id, SurfaceKind.CellWall);
+        s.Stop(0.1, new D3(0, 1, 0), new(SurfaceKind.Terrain, 5));
+        s.Polygon(Square(-2, cx: -1.3), new(SurfaceKind.CellFloor, Id), SurfaceKind.CellWall);
+        s.Polygon(Square(-2, cx: -1.3, cy: -1.3), new(SurfaceKind.CellFloor, Id), SurfaceKind.CellWall);
         ShouldMeet(s, 0.1, new D3(0, 1, 0), SurfaceKind.Terrain, 5);
     }
 
@@ -281,16 +281,16 @@ public class SweptSphereTests
     public void Shapes_met_at_the_same_fraction_keep_the_first_one_tested()
     {
         var s = new SweptSphere(Origin, new D3(0, 0, -4), 0.5);
-        s.Polygon(Square(-2), SurfaceKind.CellFloor, 1, SurfaceKind.CellWall);
-        s.Polygon(Square(-2), SurfaceKind.ObjectFloor, 2, SurfaceKind.ObjectFloor);
+        s.Polygon(Square(-2), new(SurfaceKind.CellFloor, 1), SurfaceKind.CellWall);
+        s.Polygon(Square(-2), new(SurfaceKind.ObjectFloor, 2), SurfaceKind.ObjectFloor);
         ShouldMeet(s, 0.375, new D3(0, 0, 1), SurfaceKind.CellFloor, 1);
 
         // A nearer one replaces it.
-        s.Polygon(Square(-1.9), SurfaceKind.ObjectFloor, 3, SurfaceKind.ObjectFloor);
+        s.Polygon(Square(-1.9), new(SurfaceKind.ObjectFloor, 3), SurfaceKind.ObjectFloor);
         ShouldMeet(s, 1.4 / 4, new D3(0, 0, 1), SurfaceKind.ObjectFloor, 3);
 
         // A farther one does not.
-        s.Polygon(Square(-1.95), SurfaceKind.Terrain, 4, SurfaceKind.Terrain);
+        s.Polygon(Square(-1.95), new(SurfaceKind.Terrain, 4), SurfaceKind.Terrain);
         s.Id.Should().Be(3u);
     }
 
@@ -299,27 +299,27 @@ public class SweptSphereTests
     {
         var s = new SweptSphere(Origin, new D3(0, 0, -4), 0.5);
         s.Within(0.4, 1);
-        s.Polygon(Square(-2), SurfaceKind.CellFloor, Id, SurfaceKind.CellWall); // at 0.375: before the stretch
+        s.Polygon(Square(-2), new(SurfaceKind.CellFloor, Id), SurfaceKind.CellWall); // at 0.375: before the stretch
         ShouldMiss(s);
         s.Within(0, 0.37);
-        s.Polygon(Square(-2), SurfaceKind.CellFloor, Id, SurfaceKind.CellWall); // after it
+        s.Polygon(Square(-2), new(SurfaceKind.CellFloor, Id), SurfaceKind.CellWall); // after it
         ShouldMiss(s);
         s.Within(0.375, 0.375);
-        s.Polygon(Square(-2), SurfaceKind.CellFloor, Id, SurfaceKind.CellWall); // its bounds are in it
+        s.Polygon(Square(-2), new(SurfaceKind.CellFloor, Id), SurfaceKind.CellWall); // its bounds are in it
         ShouldMeet(s, 0.375, new D3(0, 0, 1));
 
         s.Forget();
         ShouldMiss(s);
         s.Everywhere();
-        s.Polygon(Square(-2.5), SurfaceKind.CellFloor, Id, SurfaceKind.CellWall);
+        s.Polygon(Square(-2.5), new(SurfaceKind.CellFloor, Id), SurfaceKind.CellWall);
         ShouldMeet(s, 0.5, new D3(0, 0, 1));
 
         // A stretch reaching past the end is cut at the end.
         var past = new SweptSphere(Origin, new D3(0, 0, -1), 0);
         past.Within(0.5, 3);
-        past.Stop(1.5, new D3(0, 0, 1), SurfaceKind.None, 0);
+        past.Stop(1.5, new D3(0, 0, 1), new(SurfaceKind.None, 0));
         ShouldMiss(past);
-        past.Stop(1.0, new D3(0, 0, 1), SurfaceKind.CellWall, 9);
+        past.Stop(1.0, new D3(0, 0, 1), new(SurfaceKind.CellWall, 9));
         ShouldMeet(past, 1.0, new D3(0, 0, 1), SurfaceKind.CellWall, 9);
     }
 
@@ -327,19 +327,19 @@ public class SweptSphereTests
     public void Stop_ends_the_cast_only_before_the_contact_kept_and_never_before_the_start()
     {
         var s = new SweptSphere(Origin, new D3(1, 0, 0), 0.1);
-        s.Stop(0.6, new D3(-1, 0, 0), SurfaceKind.CellWall, 3);
+        s.Stop(0.6, new D3(-1, 0, 0), new(SurfaceKind.CellWall, 3));
         ShouldMeet(s, 0.6, new D3(-1, 0, 0), SurfaceKind.CellWall, 3);
-        s.Stop(0.6, new D3(0, 1, 0), SurfaceKind.None, 4);
+        s.Stop(0.6, new D3(0, 1, 0), new(SurfaceKind.None, 4));
         s.Id.Should().Be(3u, "a tie keeps the first");
-        s.Stop(0.7, new D3(0, 1, 0), SurfaceKind.None, 4);
+        s.Stop(0.7, new D3(0, 1, 0), new(SurfaceKind.None, 4));
         s.Id.Should().Be(3u);
-        s.Stop(0.2, new D3(0, 1, 0), SurfaceKind.None, 4);
+        s.Stop(0.2, new D3(0, 1, 0), new(SurfaceKind.None, 4));
         ShouldMeet(s, 0.2, new D3(0, 1, 0), SurfaceKind.None, 4);
 
         // A fraction below 0 within the stretch kept (a stretch starting before the start) is kept as 0.
         var early = new SweptSphere(Origin, new D3(1, 0, 0), 0.1);
         early.Within(-1, 1);
-        early.Stop(-0.5, new D3(-1, 0, 0), SurfaceKind.CellWall, 6);
+        early.Stop(-0.5, new D3(-1, 0, 0), new(SurfaceKind.CellWall, 6));
         early.T.Should().Be(0);
         early.Found.Should().BeTrue();
     }
@@ -349,18 +349,18 @@ public class SweptSphereTests
     {
         // Axis 2 m ahead, radius 0.5, z −1..1: the sphere of 0.25 stops with its centre 0.75 m short of the axis.
         var s = new SweptSphere(Origin, new D3(4, 0, 0), 0.25);
-        s.Cylinder(2, 0, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        s.Cylinder(2, 0, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(s, 1.25 / 4, new D3(-1, 0, 0), SurfaceKind.Cylinder, 8);
 
         // Off-centre: the axis 0.3 m to the side; the centre meets the side where (x − 2)² + 0.3² = 0.75².
         var off = new SweptSphere(Origin, new D3(4, 0, 0), 0.25);
-        off.Cylinder(2, 0.3, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        off.Cylinder(2, 0.3, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         double x = 2 - Math.Sqrt((0.75 * 0.75) - 0.09);
         ShouldMeet(off, x / 4, new D3(x - 2, -0.3, 0) * (1 / 0.75), SurfaceKind.Cylinder, 8);
 
         // A ray (radius 0) meets the side itself.
         var ray = new SweptSphere(Origin, new D3(4, 0, 0), 0);
-        ray.Cylinder(2, 0, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        ray.Cylinder(2, 0, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(ray, 1.5 / 4, new D3(-1, 0, 0), SurfaceKind.Cylinder, 8);
 
         // The side's Z span: the centre at the contact at z = 0.9 within −1..1 is met; 1.1 is not (nor the cap or rim: a
@@ -368,16 +368,16 @@ public class SweptSphereTests
         foreach ((double z, bool met) in new[] { (0.9, true), (1.1, false), (1.0, true), (-1.0, true), (-1.1, false) })
         {
             var level = new SweptSphere(Origin, new D3(4, 0, 0), 0);
-            level.Cylinder(2, 0, 0.5, -1 - z, 1 - z, SurfaceKind.Cylinder, 8);
+            level.Cylinder(2, 0, 0.5, -1 - z, 1 - z, new(SurfaceKind.Cylinder, 8));
             level.Found.Should().Be(met, $"z {z}");
         }
 
         // Rising as it goes: the contact's height is the move's Z at that fraction (0.375 · 4 = 1.5 m up: above a top at 1).
         var rising = new SweptSphere(Origin, new D3(4, 0, 4), 0);
-        rising.Cylinder(2, 0, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        rising.Cylinder(2, 0, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(rising);
         var rising2 = new SweptSphere(Origin, new D3(4, 0, 4), 0);
-        rising2.Cylinder(2, 0, 0.5, -1, 2, SurfaceKind.Cylinder, 8);
+        rising2.Cylinder(2, 0, 0.5, -1, 2, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(rising2, 0.375, new D3(-1, 0, 0), SurfaceKind.Cylinder, 8);
     }
 
@@ -385,10 +385,10 @@ public class SweptSphereTests
     public void A_sphere_passing_a_cylinder_at_exactly_the_sum_of_the_radii_touches_its_side()
     {
         var s = new SweptSphere(Origin, new D3(4, 0, 0), 0.25);
-        s.Cylinder(2, 0.75, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        s.Cylinder(2, 0.75, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(s, 0.5, new D3(0, -1, 0), SurfaceKind.Cylinder, 8);
         var past = new SweptSphere(Origin, new D3(4, 0, 0), 0.25);
-        past.Cylinder(2, 0.75 + 1e-9, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        past.Cylinder(2, 0.75 + 1e-9, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(past);
     }
 
@@ -398,7 +398,7 @@ public class SweptSphereTests
         foreach (double dz in new[] { 1.0, -1.0 })
         {
             var s = new SweptSphere(Origin, new D3(0, 0, dz), 0.25);
-            s.Cylinder(0.6, 0, 0.5, -5, 5, SurfaceKind.Cylinder, 8);
+            s.Cylinder(0.6, 0, 0.5, -5, 5, new(SurfaceKind.Cylinder, 8));
             ShouldMiss(s);
         }
     }
@@ -408,10 +408,10 @@ public class SweptSphereTests
     {
         // The axis 3 m along the move (4, 3, 0)/5: the centre stops 0.75 m short of it, at 2.25 of 5 m.
         var s = new SweptSphere(Origin, new D3(4, 3, 0), 0.25);
-        s.Cylinder(2.4, 1.8, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        s.Cylinder(2.4, 1.8, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(s, 0.45, new D3(-0.8, -0.6, 0), SurfaceKind.Cylinder, 8);
         var back = new SweptSphere(Origin, new D3(-4, 3, 0), 0.25);
-        back.Cylinder(-2.4, 1.8, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        back.Cylinder(-2.4, 1.8, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(back, 0.45, new D3(0.8, -0.6, 0), SurfaceKind.Cylinder, 8);
     }
 
@@ -419,19 +419,19 @@ public class SweptSphereTests
     public void A_sphere_misses_a_cylinder_it_passes_moves_away_from_or_stops_short_of()
     {
         var past = new SweptSphere(Origin, new D3(4, 0, 0), 0.25);
-        past.Cylinder(2, 0.8, 0.5, -1, 1, SurfaceKind.Cylinder, 8); // 0.8 m beside: beyond 0.75
+        past.Cylinder(2, 0.8, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8)); // 0.8 m beside: beyond 0.75
         ShouldMiss(past);
         var away = new SweptSphere(Origin, new D3(-4, 0, 0), 0.25);
-        away.Cylinder(2, 0, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        away.Cylinder(2, 0, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(away);
         var shortOf = new SweptSphere(Origin, new D3(1.2, 0, 0), 0.25);
-        shortOf.Cylinder(2, 0, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        shortOf.Cylinder(2, 0, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(shortOf);
         var reaching = new SweptSphere(Origin, new D3(1.25, 0, 0), 0.25);
-        reaching.Cylinder(2, 0, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        reaching.Cylinder(2, 0, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(reaching, 1.0, new D3(-1, 0, 0), SurfaceKind.Cylinder, 8);
         var vertical = new SweptSphere(Origin, new D3(0, 0, 4), 0.25);
-        vertical.Cylinder(2, 0, 0.5, -1, 5, SurfaceKind.Cylinder, 8); // beside it, rising: never nearer
+        vertical.Cylinder(2, 0, 0.5, -1, 5, new(SurfaceKind.Cylinder, 8)); // beside it, rising: never nearer
         ShouldMiss(vertical);
     }
 
@@ -439,15 +439,15 @@ public class SweptSphereTests
     public void A_sphere_starting_within_reach_of_a_cylinders_axis_is_met_at_once_moving_in_and_free_moving_out()
     {
         var inward = new SweptSphere(Origin, new D3(1, 0, 0), 0.25);
-        inward.Cylinder(0.6, 0, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        inward.Cylinder(0.6, 0, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(inward, 0, new D3(-1, 0, 0), SurfaceKind.Cylinder, 8);
         var outward = new SweptSphere(Origin, new D3(-1, 0, 0), 0.25);
-        outward.Cylinder(0.6, 0, 0.5, -1, 1, SurfaceKind.Cylinder, 8);
+        outward.Cylinder(0.6, 0, 0.5, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(outward);
 
         // Within reach but above the top, moving in level: not the side (its Z span), nor the cap (not approaching it).
         var above = new SweptSphere(Origin, new D3(1, 0, 0), 0.25);
-        above.Cylinder(0.6, 0, 0.5, -3, -1.3, SurfaceKind.Cylinder, 8);
+        above.Cylinder(0.6, 0, 0.5, -3, -1.3, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(above);
     }
 
@@ -455,43 +455,43 @@ public class SweptSphereTests
     public void A_sphere_falling_onto_a_cylinder_meets_its_top_and_one_rising_meets_its_bottom()
     {
         var fall = new SweptSphere(Origin, new D3(0.2, 0.1, -4), 0.25);
-        fall.Cylinder(0, 0, 0.5, -5, -2, SurfaceKind.Cylinder, 8);
+        fall.Cylinder(0, 0, 0.5, -5, -2, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(fall, 1.75 / 4, new D3(0, 0, 1), SurfaceKind.Cylinder, 8);
 
         var rise = new SweptSphere(Origin, new D3(0.2, 0.1, 4), 0.25);
-        rise.Cylinder(0, 0, 0.5, 2, 5, SurfaceKind.Cylinder, 8);
+        rise.Cylinder(0, 0, 0.5, 2, 5, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(rise, 1.75 / 4, new D3(0, 0, -1), SurfaceKind.Cylinder, 8);
 
         // A ray meets the top itself.
         var ray = new SweptSphere(Origin, new D3(0, 0, -4), 0);
-        ray.Cylinder(0.3, 0, 0.5, -5, -2, SurfaceKind.Cylinder, 8);
+        ray.Cylinder(0.3, 0, 0.5, -5, -2, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(ray, 0.5, new D3(0, 0, 1), SurfaceKind.Cylinder, 8);
 
         // Falling to land at the cap's edge: the point under the centre 0.5 m from the axis is on it, 0.5 + 1e-9 is not.
         var edge = new SweptSphere(Origin, new D3(0, 0, -4), 0);
-        edge.Cylinder(0.5, 0, 0.5, -5, -2, SurfaceKind.Cylinder, 8);
+        edge.Cylinder(0.5, 0, 0.5, -5, -2, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(edge, 0.5, new D3(0, 0, 1), SurfaceKind.Cylinder, 8);
         var beyond = new SweptSphere(Origin, new D3(0, 0, -4), 0);
-        beyond.Cylinder(0, 0.5 + 1e-9, 0.5, -5, -2, SurfaceKind.Cylinder, 8);
+        beyond.Cylinder(0, 0.5 + 1e-9, 0.5, -5, -2, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(beyond);
 
         // Short of the top, or moving away from it, or below the bottom moving down: nothing.
         var shortOf = new SweptSphere(Origin, new D3(0, 0, -1.7), 0.25);
-        shortOf.Cylinder(0, 0, 0.5, -5, -2, SurfaceKind.Cylinder, 8);
+        shortOf.Cylinder(0, 0, 0.5, -5, -2, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(shortOf);
         var up = new SweptSphere(Origin, new D3(0, 0, 4), 0.25);
-        up.Cylinder(0, 0, 0.5, -5, -2, SurfaceKind.Cylinder, 8);
+        up.Cylinder(0, 0, 0.5, -5, -2, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(up);
         var down = new SweptSphere(Origin, new D3(0, 0, -4), 0.25);
-        down.Cylinder(0, 0, 0.5, 2, 5, SurfaceKind.Cylinder, 8);
+        down.Cylinder(0, 0, 0.5, 2, 5, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(down);
 
         // Within the radius of the top already, over it, moving down: met at once with the cap's normal.
         var onTop = new SweptSphere(Origin, new D3(0, 0, -1), 0.25);
-        onTop.Cylinder(0, 0, 0.5, -3, -0.1, SurfaceKind.Cylinder, 8);
+        onTop.Cylinder(0, 0, 0.5, -3, -0.1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(onTop, 0, new D3(0, 0, 1), SurfaceKind.Cylinder, 8);
         var underBottom = new SweptSphere(Origin, new D3(0, 0, 1), 0.25);
-        underBottom.Cylinder(0, 0, 0.5, 0.1, 3, SurfaceKind.Cylinder, 8);
+        underBottom.Cylinder(0, 0, 0.5, 0.1, 3, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(underBottom, 0, new D3(0, 0, -1), SurfaceKind.Cylinder, 8);
     }
 
@@ -502,17 +502,17 @@ public class SweptSphereTests
         // 0.1² + w² = 0.25².
         double w = Math.Sqrt((0.25 * 0.25) - (0.1 * 0.1));
         var s = new SweptSphere(Origin, new D3(0, 0, -4), 0.25);
-        s.Cylinder(-0.6, 0, 0.5, -5, -2, SurfaceKind.Cylinder, 8);
+        s.Cylinder(-0.6, 0, 0.5, -5, -2, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(s, (2 - w) / 4, new D3(0.1 / 0.25, 0, w / 0.25), SurfaceKind.Cylinder, 8);
 
         // Rising past the bottom's.
         var r = new SweptSphere(Origin, new D3(0, 0, 4), 0.25);
-        r.Cylinder(0, 0.6, 0.5, 2, 5, SurfaceKind.Cylinder, 8);
+        r.Cylinder(0, 0.6, 0.5, 2, 5, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(r, (2 - w) / 4, new D3(0, -0.1 / 0.25, -w / 0.25), SurfaceKind.Cylinder, 8);
 
         // Oblique, at the rim from above and outside: the contact's centre is a radius from the circle.
         var oblique = new SweptSphere(Origin, new D3(1.5, 0.2, -1.5), 0.25);
-        oblique.Cylinder(1.5, 0, 0.5, -4, -1.1, SurfaceKind.Cylinder, 8);
+        oblique.Cylinder(1.5, 0, 0.5, -4, -1.1, new(SurfaceKind.Cylinder, 8));
         oblique.Found.Should().BeTrue();
         D3 c = oblique.Move * oblique.T;
         double rho = Math.Sqrt(((c.X - 1.5) * (c.X - 1.5)) + (c.Y * c.Y));
@@ -524,10 +524,10 @@ public class SweptSphereTests
 
         // 0.8 m from the axis: beyond the torus (0.75): nothing. Short of the rim: nothing.
         var past = new SweptSphere(Origin, new D3(0, 0, -4), 0.25);
-        past.Cylinder(-0.8, 0, 0.5, -5, -2, SurfaceKind.Cylinder, 8);
+        past.Cylinder(-0.8, 0, 0.5, -5, -2, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(past);
         var shortOf = new SweptSphere(Origin, new D3(0, 0, -(2 - w) * 0.99), 0.25);
-        shortOf.Cylinder(-0.6, 0, 0.5, -5, -2, SurfaceKind.Cylinder, 8);
+        shortOf.Cylinder(-0.6, 0, 0.5, -5, -2, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(shortOf);
     }
 
@@ -543,7 +543,7 @@ public class SweptSphereTests
         const double rc = 0.5, r = 0.25;
         bool top = rimZ < 0;
         var s = new SweptSphere(Origin, new D3(mx, my, mz), r);
-        s.Cylinder(ax, ay, rc, top ? rimZ - 3 : rimZ, top ? rimZ : rimZ + 3, SurfaceKind.Cylinder, 8);
+        s.Cylinder(ax, ay, rc, top ? rimZ - 3 : rimZ, top ? rimZ : rimZ + 3, new(SurfaceKind.Cylinder, 8));
         s.Found.Should().BeTrue();
         s.Kind.Should().Be(SurfaceKind.Cylinder);
         D3 c = s.Move * s.T;
@@ -568,28 +568,28 @@ public class SweptSphereTests
     {
         // 0.6 m from the axis, 0.1 m above the top: 0.1·√2 from the circle, inside r = 0.25.
         var down = new SweptSphere(Origin, new D3(0, 0, -1), 0.25);
-        down.Cylinder(-0.6, 0, 0.5, -3, -0.1, SurfaceKind.Cylinder, 8);
+        down.Cylinder(-0.6, 0, 0.5, -3, -0.1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(down, 0, new D3(Math.Sqrt(0.5), 0, Math.Sqrt(0.5)), SurfaceKind.Cylinder, 8);
         var up = new SweptSphere(Origin, new D3(0, 0, 1), 0.25);
-        up.Cylinder(-0.6, 0, 0.5, -3, -0.1, SurfaceKind.Cylinder, 8);
+        up.Cylinder(-0.6, 0, 0.5, -3, -0.1, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(up);
         var outward = new SweptSphere(Origin, new D3(1, 0, 0), 0.25);
-        outward.Cylinder(-0.6, 0, 0.5, -3, -0.1, SurfaceKind.Cylinder, 8);
+        outward.Cylinder(-0.6, 0, 0.5, -3, -0.1, new(SurfaceKind.Cylinder, 8));
         ShouldMiss(outward);
 
         // Off the axes: the axis at (−0.36, −0.48), 0.6 m away; 0.1 m above the top.
         var diagonal = new SweptSphere(Origin, new D3(0, 0, -1), 0.25);
-        diagonal.Cylinder(-0.36, -0.48, 0.5, -3, -0.1, SurfaceKind.Cylinder, 8);
+        diagonal.Cylinder(-0.36, -0.48, 0.5, -3, -0.1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(diagonal, 0, new D3(0.06, 0.08, 0.1) * (1 / Math.Sqrt(0.02)), SurfaceKind.Cylinder, 8);
 
         // The bottom's: 0.1 m below it, rising.
         var rise = new SweptSphere(Origin, new D3(0, 0, 1), 0.25);
-        rise.Cylinder(-0.6, 0, 0.5, 0.1, 3, SurfaceKind.Cylinder, 8);
+        rise.Cylinder(-0.6, 0, 0.5, 0.1, 3, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(rise, 0, new D3(Math.Sqrt(0.5), 0, -Math.Sqrt(0.5)), SurfaceKind.Cylinder, 8);
 
         // Within the torus but below the top's circle, outside the side (beside it), moving in: the side answers, not the rim.
         var beside = new SweptSphere(Origin, new D3(-1, 0, 0), 0.25);
-        beside.Cylinder(-0.6, 0, 0.5, -3, 0.1, SurfaceKind.Cylinder, 8);
+        beside.Cylinder(-0.6, 0, 0.5, -3, 0.1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(beside, 0, new D3(1, 0, 0), SurfaceKind.Cylinder, 8);
     }
 
@@ -725,33 +725,33 @@ public class SweptSphereTests
     {
         // The cell's south-west corner 1 m west and south of the start, side 24 m, 2 m below.
         var s = new SweptSphere(Origin, new D3(0.5, 0.25, -4), 0.25);
-        s.BilinearCell(-1, -1, 24, -2, -2, -2, -2, 0x1234);
+        s.BilinearCell(-1, -1, 24, new(-2, -2, -2, -2), 0x1234);
         ShouldMeet(s, 1.75 / 4, new D3(0, 0, 1), SurfaceKind.Terrain, 0x1234);
 
         // A ray.
         var ray = new SweptSphere(Origin, new D3(0.5, 0.25, -4), 0);
-        ray.BilinearCell(-1, -1, 24, -2, -2, -2, -2, 0x1234);
+        ray.BilinearCell(-1, -1, 24, new(-2, -2, -2, -2), 0x1234);
         ShouldMeet(ray, 0.5, new D3(0, 0, 1), SurfaceKind.Terrain, 0x1234);
 
         // Outside the cell (east of it, north of it, west, south): nothing.
         foreach ((double x0, double y0) in new[] { (-30.0, -1.0), (-1.0, -30.0), (1.0, -1.0), (-1.0, 1.0) })
         {
             var outside = new SweptSphere(Origin, new D3(0, 0, -4), 0);
-            outside.BilinearCell(x0, y0, 24, -2, -2, -2, -2, 0x1234);
+            outside.BilinearCell(x0, y0, 24, new(-2, -2, -2, -2), 0x1234);
             ShouldMiss(outside);
         }
 
         // Short of it, moving up from above it: nothing.
         var shortOf = new SweptSphere(Origin, new D3(0, 0, -1.5), 0.25);
-        shortOf.BilinearCell(-1, -1, 24, -2, -2, -2, -2, 0x1234);
+        shortOf.BilinearCell(-1, -1, 24, new(-2, -2, -2, -2), 0x1234);
         ShouldMiss(shortOf);
         var up = new SweptSphere(Origin, new D3(0, 0, 4), 0.25);
-        up.BilinearCell(-1, -1, 24, -2, -2, -2, -2, 0x1234);
+        up.BilinearCell(-1, -1, 24, new(-2, -2, -2, -2), 0x1234);
         ShouldMiss(up);
 
         // Level over it: nothing.
         var level = new SweptSphere(Origin, new D3(4, 3, 0), 0.25);
-        level.BilinearCell(-1, -1, 24, -2, -2, -2, -2, 0x1234);
+        level.BilinearCell(-1, -1, 24, new(-2, -2, -2, -2), 0x1234);
         ShouldMiss(level);
     }
 
@@ -761,22 +761,22 @@ public class SweptSphereTests
         // h = −2 + 0.5·(x − x0) over x (the east corners 12 m higher over 24 m), the start 1 m east of the west edge.
         // Falling straight down: h at the start's x is −1.5. Normal: (−0.5, 0, 1)/√1.25.
         var s = new SweptSphere(Origin, new D3(0, 0, -4), 0);
-        s.BilinearCell(-1, -1, 24, -2, 10, -2, 10, 7);
+        s.BilinearCell(-1, -1, 24, new(-2, 10, -2, 10), 7);
         ShouldMeet(s, 1.5 / 4, new D3(-0.5, 0, 1) * (1 / Math.Sqrt(1.25)), SurfaceKind.Terrain, 7);
 
         // North rising: h = −2 + 0.25·(y − y0), at the start −1.75; normal (0, −0.25, 1)/√1.0625.
         var n = new SweptSphere(Origin, new D3(0, 0, -4), 0);
-        n.BilinearCell(-1, -1, 24, -2, -2, 4, 4, 7);
+        n.BilinearCell(-1, -1, 24, new(-2, -2, 4, 4), 7);
         ShouldMeet(n, 1.75 / 4, new D3(0, -0.25, 1) * (1 / Math.Sqrt(1.0625)), SurfaceKind.Terrain, 7);
 
         // Moving east into the rising slope, level: met where −2 + 0.5·(x + 1) = 0 − r... for a ray, x = 3.
         var east = new SweptSphere(Origin, new D3(8, 0, 0), 0);
-        east.BilinearCell(-1, -1, 24, -2, 10, -2, 10, 7);
+        east.BilinearCell(-1, -1, 24, new(-2, 10, -2, 10), 7);
         ShouldMeet(east, 3.0 / 8, new D3(-0.5, 0, 1) * (1 / Math.Sqrt(1.25)), SurfaceKind.Terrain, 7);
 
         // Moving west down the slope, level: never meets it.
         var west = new SweptSphere(Origin, new D3(-0.9, 0, 0), 0);
-        west.BilinearCell(-1, -1, 24, -2, 10, -2, 10, 7);
+        west.BilinearCell(-1, -1, 24, new(-2, 10, -2, 10), 7);
         ShouldMiss(west);
     }
 
@@ -789,7 +789,7 @@ public class SweptSphereTests
         foreach ((D3 move, double r) in new[] { (new D3(1.5, 1.5, -0.5), 0.0), (new D3(1.5, 1.0, -0.6), 0.0), (new D3(1.8, 1.2, -1.0), 0.1), (new D3(-0.8, -0.8, -1.8), 0.0), (new D3(1.5, -0.8, -1.0), 0.05) })
         {
             var s = new SweptSphere(Origin, move, r);
-            s.BilinearCell(-1, -1, 4, -1, -1, -1, 3, 9);
+            s.BilinearCell(-1, -1, 4, new(-1, -1, -1, 3), 9);
             s.Found.Should().BeTrue($"{move}");
             D3 c = move * s.T;
             double u = (c.X + 1) / 4, v = (c.Y + 1) / 4;
@@ -816,37 +816,37 @@ public class SweptSphereTests
         // south-west corner moving north-east and down 0.5 m: h = −4·u·v; z = 1 − 0.5 t at u = v = t: 1 − 0.5t = −4t² has
         // no root in 0..1 (the ray stays above).
         var s = new SweptSphere(Origin, new D3(4, 4, -0.5), 0);
-        s.BilinearCell(0, 0, 4, -1, -1, -1, -5, 9);
+        s.BilinearCell(0, 0, 4, new(-1, -1, -1, -5), 9);
         ShouldMiss(s);
 
         // A hump (NE +4): h = 4uv − 1 at z = −t... rising out of the patch it entered below: once below, free moving up.
         var under = new SweptSphere(Origin, new D3(4, 4, 4.5), 0);
-        under.BilinearCell(0, 0, 4, 0.5, 0.5, 0.5, 8.5, 9); // the start 0.5 m below the SW corner
+        under.BilinearCell(0, 0, 4, new(0.5, 0.5, 0.5, 8.5), 9); // the start 0.5 m below the SW corner
         ShouldMiss(under);
 
         // Starting below the patch and moving down into it: met at once where the ray enters the cell.
         var into = new SweptSphere(Origin, new D3(1, 1, -1), 0);
-        into.BilinearCell(0, 0, 4, 0.5, 0.5, 0.5, 0.5, 9);
+        into.BilinearCell(0, 0, 4, new(0.5, 0.5, 0.5, 0.5), 9);
         ShouldMeet(into, 0, new D3(0, 0, 1), SurfaceKind.Terrain, 9);
 
         // Entering the cell from the west below its height, falling: met at the fraction it enters.
         var west = new SweptSphere(Origin, new D3(4, 0.5, -1), 0);
-        west.BilinearCell(1, -1, 4, 0.5, 0.5, 0.5, 0.5, 9);
+        west.BilinearCell(1, -1, 4, new(0.5, 0.5, 0.5, 0.5), 9);
         ShouldMeet(west, 0.25, new D3(0, 0, 1), SurfaceKind.Terrain, 9);
 
         // The same with a contact kept earlier: not replaced.
         var earlier = new SweptSphere(Origin, new D3(4, 0.5, -1), 0);
-        earlier.Stop(0.1, new D3(1, 0, 0), SurfaceKind.CellWall, 1);
-        earlier.BilinearCell(1, -1, 4, 0.5, 0.5, 0.5, 0.5, 9);
+        earlier.Stop(0.1, new D3(1, 0, 0), new(SurfaceKind.CellWall, 1));
+        earlier.BilinearCell(1, -1, 4, new(0.5, 0.5, 0.5, 0.5), 9);
         earlier.T.Should().Be(0.1);
         earlier.Kind.Should().Be(SurfaceKind.CellWall);
 
         // Entering at exactly its height, moving down: met at entry; moving up: free.
         var atHeight = new SweptSphere(Origin, new D3(4, 0.5, -1), 0);
-        atHeight.BilinearCell(1, -1, 4, -0.25, -0.25, -0.25, -0.25, 9);
+        atHeight.BilinearCell(1, -1, 4, new(-0.25, -0.25, -0.25, -0.25), 9);
         ShouldMeet(atHeight, 0.25, new D3(0, 0, 1), SurfaceKind.Terrain, 9);
         var atHeightUp = new SweptSphere(Origin, new D3(4, 0.5, 1), 0);
-        atHeightUp.BilinearCell(1, -1, 4, 0.25, 0.25, 0.25, 0.25, 9);
+        atHeightUp.BilinearCell(1, -1, 4, new(0.25, 0.25, 0.25, 0.25), 9);
         ShouldMiss(atHeightUp);
     }
 
@@ -855,24 +855,24 @@ public class SweptSphereTests
     {
         // The cell from x 0..4; the ray leaves it at x = 4 (t 0.5) and would come down to its plane at t 0.75.
         var s = new SweptSphere(Origin, new D3(8, 0.5, -4), 0);
-        s.BilinearCell(-0.001, -1, 4, -3, -3, -3, -3, 9);
+        s.BilinearCell(-0.001, -1, 4, new(-3, -3, -3, -3), 9);
         ShouldMiss(s);
         var twisted = new SweptSphere(Origin, new D3(8, 0.5, -4), 0);
-        twisted.BilinearCell(-0.001, -1, 4, -3, -3, -3, -2.9, 9);
+        twisted.BilinearCell(-0.001, -1, 4, new(-3, -3, -3, -2.9), 9);
         ShouldMiss(twisted);
 
         // Along a cell edge exactly (the ray on its west line moving north): within the cell's span.
         var edge = new SweptSphere(Origin, new D3(0, 2, -4), 0);
-        edge.BilinearCell(0, -1, 4, -2, -2, -2, -2, 9);
+        edge.BilinearCell(0, -1, 4, new(-2, -2, -2, -2), 9);
         ShouldMeet(edge, 0.5, new D3(0, 0, 1), SurfaceKind.Terrain, 9);
         var beside = new SweptSphere(Origin, new D3(0, 2, -4), 0);
-        beside.BilinearCell(1e-9, -1, 4, -2, -2, -2, -2, 9);
+        beside.BilinearCell(1e-9, -1, 4, new(-2, -2, -2, -2), 9);
         ShouldMiss(beside);
         var north = new SweptSphere(Origin, new D3(2, 0, -4), 0);
-        north.BilinearCell(-1, -4 - 1e-9, 4, -2, -2, -2, -2, 9);
+        north.BilinearCell(-1, -4 - 1e-9, 4, new(-2, -2, -2, -2), 9);
         ShouldMiss(north);
         var onNorth = new SweptSphere(Origin, new D3(2, 0, -4), 0);
-        onNorth.BilinearCell(-1, -4, 4, -2, -2, -2, -2, 9);
+        onNorth.BilinearCell(-1, -4, 4, new(-2, -2, -2, -2), 9);
         ShouldMeet(onNorth, 0.5, new D3(0, 0, 1), SurfaceKind.Terrain, 9);
     }
 
@@ -880,7 +880,7 @@ public class SweptSphereTests
     public void A_ray_through_a_cylinder_of_no_radius_on_its_axis_takes_the_normal_against_its_move()
     {
         var s = new SweptSphere(Origin, new D3(4, 0, 0), 0);
-        s.Cylinder(2, 0, 0, -1, 1, SurfaceKind.Cylinder, 8);
+        s.Cylinder(2, 0, 0, -1, 1, new(SurfaceKind.Cylinder, 8));
         ShouldMeet(s, 0.5, new D3(-1, 0, 0), SurfaceKind.Cylinder, 8);
     }
 }

@@ -6,9 +6,10 @@ internal partial struct SweptSphere
 {
     /// <summary>
     /// An upright cylinder (axis <paramref name="axisX"/>, <paramref name="axisY"/> relative to the start; radius
-    /// <paramref name="radius"/>; from <paramref name="z0"/> to <paramref name="z1"/> relative to the start).
+    /// <paramref name="radius"/>; from <paramref name="z0"/> to <paramref name="z1"/> relative to the start), as
+    /// <paramref name="name"/>.
     /// </summary>
-    public void Cylinder(double axisX, double axisY, double radius, double z0, double z1, SurfaceKind kind, uint id)
+    public void Cylinder(double axisX, double axisY, double radius, double z0, double z1, ShapeName name)
     {
         double dx = Move.X, dy = Move.Y, dz = Move.Z;
         double a = (dx * dx) + (dy * dy);
@@ -34,29 +35,36 @@ internal partial struct SweptSphere
             if (t >= 0 && t < T && t <= 1.0 && z >= z0 && z <= z1)
             {
                 D3 centre = Move * t;
-                Keep(t, Towards(new D3(centre.X - axisX, centre.Y - axisY, 0)), kind, id);
+                Keep(t, Towards(new D3(centre.X - axisX, centre.Y - axisY, 0)), name);
             }
         }
 
         // The caps: the centre a radius above the top (or below the bottom) within the cylinder's radius, approached from
         // above it (below it); a centre already within the radius of the cap is met at once.
-        Cap(axisX, axisY, radius, z1 + Radius, dz < 0 && z1 < 0, 1.0, kind, id);
-        Cap(axisX, axisY, radius, z0 - Radius, dz > 0 && z0 > 0, -1.0, kind, id);
+        if (dz < 0 && z1 < 0)
+        {
+            Cap(axisX, axisY, radius, z1 + Radius, 1.0, name);
+        }
+
+        if (dz > 0 && z0 > 0)
+        {
+            Cap(axisX, axisY, radius, z0 - Radius, -1.0, name);
+        }
 
         if (Radius > 0)
         {
-            Rim(axisX, axisY, radius, z1, 1.0, kind, id);
-            Rim(axisX, axisY, radius, z0, -1.0, kind, id);
+            Rim(axisX, axisY, radius, z1, 1.0, name);
+            Rim(axisX, axisY, radius, z0, -1.0, name);
         }
     }
 
-    private void Cap(double axisX, double axisY, double radius, double planeZ, bool approaching, double up, SurfaceKind kind, uint id)
+    /// <summary>
+    /// The top cap (<paramref name="up"/> 1) or the bottom one (−1), which the caller has found the centre approaching:
+    /// met where the centre reaches <paramref name="planeZ"/> (a radius beyond the cap) within <paramref name="radius"/>
+    /// of the axis, at 0 when it starts within the radius of the cap's plane.
+    /// </summary>
+    private void Cap(double axisX, double axisY, double radius, double planeZ, double up, ShapeName name)
     {
-        if (!approaching)
-        {
-            return;
-        }
-
         double t = Math.Max(planeZ / Move.Z, 0.0);
         if (!(t < T) || t > 1.0)
         {
@@ -66,7 +74,7 @@ internal partial struct SweptSphere
         double hx = (Move.X * t) - axisX, hy = (Move.Y * t) - axisY;
         if ((hx * hx) + (hy * hy) <= radius * radius)
         {
-            Keep(t, new D3(0, 0, up), kind, id);
+            Keep(t, new D3(0, 0, up), name);
         }
     }
 
@@ -78,7 +86,7 @@ internal partial struct SweptSphere
     /// P = S² − 4·rc²·ρ² is a quartic in the fraction. Its roots are isolated exactly (<see cref="Roots"/>), so a sphere
     /// that dips into the rim by any depth is met, at the first root where S ≥ 0.
     /// </summary>
-    private void Rim(double axisX, double axisY, double radius, double z, double up, SurfaceKind kind, uint id)
+    private void Rim(double axisX, double axisY, double radius, double z, double up, ShapeName name)
     {
         double limit = Math.Min(T, 1.0);
         double reach = radius + Radius;
@@ -102,7 +110,7 @@ internal partial struct SweptSphere
             var away0 = new D3(-axisX + (axisX * f0), -axisY + (axisY * f0), w0);
             if (w0 * up > 0 && rho0 > radius && D3.Dot(away0, Move) < 0)
             {
-                Keep(0, Towards(away0), kind, id);
+                Keep(0, Towards(away0), name);
             }
 
             return;
@@ -124,7 +132,7 @@ internal partial struct SweptSphere
             var away = new D3(hx - (hx * f), hy - (hy * f), centre.Z - z);
             if ((centre.Z - z) * up > 0 && rho > radius)
             {
-                Keep(t, Towards(away), kind, id);
+                Keep(t, Towards(away), name);
             }
 
             return; // the first crossing of the torus: beyond it the side or a cap answers

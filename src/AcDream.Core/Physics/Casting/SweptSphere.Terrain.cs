@@ -6,13 +6,15 @@ internal partial struct SweptSphere
 {
     /// <summary>
     /// The ray (radius 0) or the lowest point (radius R) of the sphere against the bilinear patch of one terrain cell
-    /// (south-west corner at x0, y0 relative to the start, side <c>size</c> metres; corner heights relative to the
-    /// start), met from above, as terrain cell <c>id</c>.
+    /// (south-west corner at <paramref name="x0"/>, <paramref name="y0"/> relative to the start, side
+    /// <paramref name="size"/> metres; corner <paramref name="heights"/> relative to the start), met from above, as
+    /// terrain cell <paramref name="id"/>.
     /// </summary>
-    public void BilinearCell(double x0, double y0, double size, double hSW, double hSE, double hNW, double hNE, uint id)
+    public void BilinearCell(double x0, double y0, double size, in CornerHeights heights, uint id)
     {
         // Along the ray: u = (tDx − x0)/size, v = (tDy − y0)/size; the lowest point's Z − h(u, v) is a quadratic in t.
         double u0 = -x0 / size, du = Move.X / size, v0 = -y0 / size, dv = Move.Y / size;
+        double hSW = heights.SW, hSE = heights.SE, hNW = heights.NW, hNE = heights.NE;
         double a = hSW, b = hSE - hSW, c = hNW - hSW, d = hNE - hNW - hSE + hSW; // h = a + b·u + c·v + d·u·v
         double k0 = -Radius - (a + (b * u0) + (c * v0) + (d * u0 * v0));
         double k1 = Move.Z - ((b * du) + (c * dv) + (d * ((u0 * dv) + (v0 * du))));
@@ -31,7 +33,7 @@ internal partial struct SweptSphere
         {
             if (slopeIn < 0 && tIn < T && tIn <= 1.0)
             {
-                Keep(tIn, PatchNormal(u0 + (du * tIn), v0 + (dv * tIn), b, c, d, size), SurfaceKind.Terrain, id);
+                Keep(tIn, PatchNormal(u0 + (du * tIn), v0 + (dv * tIn), b, c, d, size), new ShapeName(SurfaceKind.Terrain, id));
             }
 
             return;
@@ -68,7 +70,7 @@ internal partial struct SweptSphere
             return;
         }
 
-        Keep(best, PatchNormal(u0 + (du * best), v0 + (dv * best), b, c, d, size), SurfaceKind.Terrain, id);
+        Keep(best, PatchNormal(u0 + (du * best), v0 + (dv * best), b, c, d, size), new ShapeName(SurfaceKind.Terrain, id));
     }
 
     /// <summary>The bilinear patch's unit normal (up) at (u, v), for h = a + b·u + c·v + d·u·v over a cell of side <paramref name="size"/>.</summary>
@@ -104,3 +106,6 @@ internal partial struct SweptSphere
         }
     }
 }
+
+/// <summary>The heights of a terrain cell's four corners (south-west, south-east, north-west, north-east), in metres.</summary>
+internal readonly record struct CornerHeights(double SW, double SE, double NW, double NE);

@@ -62,23 +62,23 @@ internal partial struct SweptSphere
     /// <summary>Forgets every contact found (a centre passing in through a doorway: what lay beyond it outdoors is behind the cell's own walls).</summary>
     public void Forget() => (T, Kind, Id) = (double.PositiveInfinity, SurfaceKind.None, 0);
 
-    /// <summary>Ends the cast at <paramref name="t"/> when nothing was met before it (a portal to a cell not loaded, land not loaded).</summary>
-    public void Stop(double t, D3 normal, SurfaceKind kind, uint id) => Keep(t, normal, kind, id);
+    /// <summary>Ends the cast at <paramref name="t"/> when nothing was met before it (a portal to a cell not loaded, land not loaded), naming <paramref name="name"/>.</summary>
+    public void Stop(double t, D3 normal, ShapeName name) => Keep(t, normal, name);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private void Keep(double t, D3 normal, SurfaceKind kind, uint id)
+    private void Keep(double t, D3 normal, ShapeName name)
     {
         if (t < T && t <= _to && t >= _from)
         {
-            (T, Normal, Kind, Id) = (Math.Max(t, 0.0), normal, kind, id);
+            (T, Normal, Kind, Id) = (Math.Max(t, 0.0), normal, name.Kind, name.Id);
         }
     }
 
     /// <summary>
-    /// The polygon (vertices relative to <see cref="Start"/>, convex, in winding order), as <paramref name="kind"/>
-    /// <paramref name="id"/>; <paramref name="kindFacingDown"/> names it when its normal points down (a ceiling).
+    /// The polygon (vertices relative to <see cref="Start"/>, convex, in winding order), as <paramref name="name"/>;
+    /// <paramref name="kindFacingDown"/> is its kind when its normal points down (a ceiling), with the same id.
     /// </summary>
-    public void Polygon(ReadOnlySpan<D3> v, SurfaceKind kind, uint id, SurfaceKind kindFacingDown)
+    public void Polygon(ReadOnlySpan<D3> v, ShapeName name, SurfaceKind kindFacingDown)
     {
         // Newell normal, through the vertices' mean.
         (D3 newell, D3 sum) = D3.Newell(v);
@@ -90,11 +90,11 @@ internal partial struct SweptSphere
         }
 
         var n = new D3(nx / length, ny / length, nz / length);
-        SurfaceKind named = n.Z <= -PhysicsConstants.FloorZ ? kindFacingDown : kind;
+        ShapeName named = n.Z <= -PhysicsConstants.FloorZ ? new ShapeName(kindFacingDown, name.Id) : name;
         var c = new D3(cx / v.Length, cy / v.Length, cz / v.Length);
         double s0 = -D3.Dot(n, c); // the start's signed distance from the plane
         double rate = D3.Dot(n, Move);
-        if (Radius > 0 && Math.Abs(s0) < Radius && Overlapping(v, n, s0, rate, named, id))
+        if (Radius > 0 && Math.Abs(s0) < Radius && Overlapping(v, n, s0, rate, named))
         {
             return; // the sphere starts within its radius of the polygon: met at once, or free of it
         }
@@ -109,7 +109,7 @@ internal partial struct SweptSphere
                 D3 touch = (Move * t) - (n * (side * Radius)); // (only its place in the plane matters to the inside test)
                 if (Inside(v, n, touch))
                 {
-                    Keep(t, n * side, named, id);
+                    Keep(t, n * side, named);
                     return; // the face is the first of this polygon met
                 }
             }
@@ -119,8 +119,8 @@ internal partial struct SweptSphere
         {
             for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
             {
-                Edge(v[j], v[i], named, id);
-                Corner(v[i], named, id);
+                Edge(v[j], v[i], named);
+                Corner(v[i], named);
             }
         }
     }
@@ -132,7 +132,7 @@ internal partial struct SweptSphere
     /// along the plane or away. Decided by the plane, not by the nearest point: a sphere gliding over a floor of many
     /// triangles comes nearer to the edges it crosses, but not into the floor.
     /// </summary>
-    private bool Overlapping(ReadOnlySpan<D3> v, D3 n, double s0, double rate, SurfaceKind kind, uint id)
+    private bool Overlapping(ReadOnlySpan<D3> v, D3 n, double s0, double rate, ShapeName name)
     {
         D3 nearest = n * -s0; // the start's foot on the plane
         if (!Inside(v, n, nearest))
@@ -159,7 +159,7 @@ internal partial struct SweptSphere
         double side = s0 > 0 ? 1.0 : -1.0;
         if (s0 != 0 && side * rate < 0)
         {
-            Keep(0, n * side, kind, id);
+            Keep(0, n * side, name);
         }
 
         return true;
@@ -183,7 +183,7 @@ internal partial struct SweptSphere
     }
 
     /// <summary>The segment a–b (relative to the start) as a capsule of the sphere's radius.</summary>
-    private void Edge(D3 a, D3 b, SurfaceKind kind, uint id)
+    private void Edge(D3 a, D3 b, ShapeName name)
     {
         D3 e = b - a, m = -a;
         double ee = D3.Dot(e, e), ed = D3.Dot(e, Move), em = D3.Dot(e, m);
@@ -221,11 +221,11 @@ internal partial struct SweptSphere
             return;
         }
 
-        Keep(t, Towards(centre - (a + (e * s))), kind, id);
+        Keep(t, Towards(centre - (a + (e * s))), name);
     }
 
     /// <summary>The point <paramref name="p"/> (relative to the start) as a sphere of the cast's radius.</summary>
-    private void Corner(D3 p, SurfaceKind kind, uint id)
+    private void Corner(D3 p, ShapeName name)
     {
         D3 m = -p;
         double b = D3.Dot(m, Move), c = D3.Dot(m, m) - (Radius * Radius);
@@ -243,7 +243,7 @@ internal partial struct SweptSphere
         double t = (-b - Math.Sqrt(disc)) / MoveSquared;
         if (t < T && t <= 1.0)
         {
-            Keep(t, Towards((Move * t) - p), kind, id);
+            Keep(t, Towards((Move * t) - p), name);
         }
     }
 
@@ -254,3 +254,9 @@ internal partial struct SweptSphere
         return l > 0 ? fromShape * (1.0 / l) : -Move * (1.0 / Math.Sqrt(MoveSquared));
     }
 }
+
+/// <summary>
+/// What a contact with a shape names: the kind of surface and its id (a cell's, an object's, a mover's, a terrain
+/// cell's). Eight bytes, passed by value.
+/// </summary>
+internal readonly record struct ShapeName(SurfaceKind Kind, uint Id);

@@ -11,7 +11,7 @@ internal static partial class WorldCast
     private static void Cell(ref SweptSphere ray, CellSurface cell, D3 offset, in Box box)
     {
         Walls(ref ray, cell.Walls, offset, in box, new Names(SurfaceKind.CellWall, SurfaceKind.CellCeiling, SurfaceKind.CellWall, cell.CellId));
-        Floors(ref ray, cell.Floors, offset, in box, SurfaceKind.CellFloor, cell.CellId);
+        Floors(ref ray, cell.Floors, offset, in box, new ShapeName(SurfaceKind.CellFloor, cell.CellId));
         foreach (ObjectSurface o in cell.Objects)
         {
             Object(ref ray, o, offset, in box);
@@ -48,7 +48,7 @@ internal static partial class WorldCast
             }
 
             (v[0], v[1], v[2]) = (corners[3 * i] + rel, corners[(3 * i) + 1] + rel, corners[(3 * i) + 2] + rel);
-            ray.Polygon(v, SurfaceKind.ObjectFloor, o.ObjectId, SurfaceKind.ObjectFloor);
+            ray.Polygon(v, new ShapeName(SurfaceKind.ObjectFloor, o.ObjectId), SurfaceKind.ObjectFloor);
         }
     }
 
@@ -101,7 +101,7 @@ internal static partial class WorldCast
             ref readonly WallPolygon w = ref polygons[i];
             if (w.Radius > 0f)
             {
-                ray.Cylinder(w.A.X + rel.X, w.A.Y + rel.Y, w.Radius, w.ZMin + rel.Z, w.ZMax + rel.Z, names.Round, names.Id);
+                ray.Cylinder(w.A.X + rel.X, w.A.Y + rel.Y, w.Radius, w.ZMin + rel.Z, w.ZMax + rel.Z, new ShapeName(names.Round, names.Id));
                 continue;
             }
 
@@ -110,13 +110,13 @@ internal static partial class WorldCast
                 v[k] = vertices.At(w.First + k, rel);
             }
 
-            ray.Polygon(v[..w.Count], names.Wall, names.Id, names.FacingDown);
+            ray.Polygon(v[..w.Count], new ShapeName(names.Wall, names.Id), names.FacingDown);
         }
     }
 
-    /// <summary>Floor triangles whose bounds meet the box, each at the Z its plane gives its corners (as a mover stands on it).</summary>
+    /// <summary>Floor triangles whose bounds meet the box, each at the Z its plane gives its corners (as a mover stands on it), as <paramref name="name"/>.</summary>
     [SkipLocalsInit]
-    private static void Floors(ref SweptSphere ray, ReadOnlySpan<FloorTriangle> floors, D3 offset, in Box box, SurfaceKind kind, uint id)
+    private static void Floors(ref SweptSphere ray, ReadOnlySpan<FloorTriangle> floors, D3 offset, in Box box, ShapeName name)
     {
         Span<D3> v = stackalloc D3[3];
         D3 rel = offset - ray.Start;
@@ -130,7 +130,7 @@ internal static partial class WorldCast
             v[0] = Corner(in f, f.A, rel);
             v[1] = Corner(in f, f.B, rel);
             v[2] = Corner(in f, f.C, rel);
-            ray.Polygon(v, kind, id, kind);
+            ray.Polygon(v, name, name.Kind);
         }
     }
 

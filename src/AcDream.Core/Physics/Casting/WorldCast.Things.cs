@@ -82,7 +82,8 @@ internal static partial class WorldCast
                     (sw, nw, se, ne) = (sw + z, nw + z, se + z, ne + z);
                     if (terrain.LandblockId is null)
                     {
-                        ray.BilinearCell(x, y, Column, sw, se, nw, ne, id);
+                        var heights = new CornerHeights(sw, se, nw, ne);
+                        ray.BilinearCell(x, y, Column, in heights, id);
                         continue;
                     }
 
@@ -104,7 +105,7 @@ internal static partial class WorldCast
         private static void Triangle(ref SweptSphere ray, Span<D3> v, D3 a, D3 b, D3 c, uint id)
         {
             (v[0], v[1], v[2]) = (a, b, c);
-            ray.Polygon(v, SurfaceKind.Terrain, id, SurfaceKind.Terrain);
+            ray.Polygon(v, new ShapeName(SurfaceKind.Terrain, id), SurfaceKind.Terrain);
         }
 
         /// <summary>The movers within the box that the cast's filters do not pass (itself is never listed): those filed in the squares near the box, not the call's.</summary>

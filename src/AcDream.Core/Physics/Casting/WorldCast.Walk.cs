@@ -118,7 +118,7 @@ internal static partial class WorldCast
             if (target == LandblockEntry.MissingCell)
             {
                 Vector3 n = -own[through].OutNormal;
-                ray.Stop(exit, new D3(n.X, n.Y, n.Z), SurfaceKind.CellWall, here.CellId);
+                ray.Stop(exit, new D3(n.X, n.Y, n.Z), new ShapeName(SurfaceKind.CellWall, here.CellId));
                 piece.Done = true;
                 return;
             }
@@ -139,7 +139,7 @@ internal static partial class WorldCast
                     new(ox + (tx * p.TMin), oy + (ty * p.TMin), z0), new(ox + (tx * p.TMax), oy + (ty * p.TMax), z0),
                     new(ox + (tx * p.TMax), oy + (ty * p.TMax), z1), new(ox + (tx * p.TMin), oy + (ty * p.TMin), z1),
                 ];
-                ray.Polygon(rectangle, SurfaceKind.CellWall, cellId, SurfaceKind.CellWall);
+                ray.Polygon(rectangle, new ShapeName(SurfaceKind.CellWall, cellId), SurfaceKind.CellWall);
             }
             else if (p.Kind == PortalKind.Horizontal && p.Outline.Length <= PhysicsConstants.MaxWallPolygonVertices)
             {
@@ -151,7 +151,7 @@ internal static partial class WorldCast
                 }
 
                 SurfaceKind named = p.OutNormal.Z > 0 ? SurfaceKind.CellCeiling : SurfaceKind.CellFloor; // an opening in the ceiling, or in the floor
-                ray.Polygon(v, named, cellId, named);
+                ray.Polygon(v, new ShapeName(named, cellId), named);
             }
         }
 
@@ -183,7 +183,7 @@ internal static partial class WorldCast
                     if (t0 < ray.T)
                     {
                         D3 back = -d * (1.0 / Math.Max(d.Length, double.Epsilon));
-                        ray.Stop(t0, back, SurfaceKind.None, 0); // land not loaded (or off the world): the cast ends where it begins
+                        ray.Stop(t0, back, new ShapeName(SurfaceKind.None, 0)); // land not loaded (or off the world): the cast ends where it begins
                     }
 
                     piece.Done = true;

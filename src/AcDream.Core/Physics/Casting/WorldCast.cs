@@ -72,7 +72,7 @@ internal static partial class WorldCast
         if (!piece.Done && piece.From < ray.T)
         {
             // Out of visits: the rest of the path was not looked at, so the cast ends where the last piece began.
-            ray.Stop(piece.From, -move * (1.0 / Math.Max(move.Length, double.Epsilon)), SurfaceKind.None, 0);
+            ray.Stop(piece.From, -move * (1.0 / Math.Max(move.Length, double.Epsilon)), new ShapeName(SurfaceKind.None, 0));
         }
 
         double t = Math.Min(ray.T, 1.0);
