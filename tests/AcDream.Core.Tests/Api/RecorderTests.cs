@@ -15,6 +15,7 @@ public class RecorderTests
     private const uint MainRoom = 0xA9B40143;
 
     [Fact]
+    [Trait("Mutation", "MoverRegistry")]
     public void A_recorder_sees_every_call_in_order_with_the_answers_the_caller_got()
     {
         PhysicsEngine engine = RealObjects.HoltburgWithCellarStairs("centred");

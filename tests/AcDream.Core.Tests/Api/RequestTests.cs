@@ -38,6 +38,7 @@ public class RequestTests
     }
 
     [Fact]
+    [Trait("Mutation", "MoverRegistry")]
     public void The_touched_movers_fill_the_span_in_the_order_met_and_are_counted_beyond_it_and_the_commit_is_named()
     {
         PhysicsEngine engine = RealObjects.HoltburgWithCellarStairs("centred");
