@@ -53,8 +53,7 @@ public sealed partial class PhysicsEngine
     public CastHit Cast(in CastRequest request) => _recorder is null ? Casted(in request) : Recorded(in request);
 
     /// <summary>
-    /// The cast itself. The preamble is written out (Query's, with Casting's parts): measured, the generic form costs the
-    /// camera's cast 7–10 %.
+    /// The cast itself. The preamble is written out, as every query's: measured, a generic form cost the camera's cast 7–10 %.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private CastHit Casted(in CastRequest request)

@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Point;
 
 namespace AcDream.Core.Physics;
 
-// The two Resolve calls' own parts, run through the one preamble (Query).
+// The spec's call's and the options call's own parts, and their held paths.
 public sealed partial class PhysicsEngine
 {
     /// <summary>
@@ -17,7 +17,6 @@ public sealed partial class PhysicsEngine
     private ResolveResult Move(ref MoveQuery query, in MovementOptions options, float dz) =>
         options.InThreeD ? _motion.Resolve(ref query, dz) : _motion.Horizontal(ref query);
 
-    /// <summary>The spec's call (<see cref="Resolve(Vector3, uint, Vector3, float)"/>): no effects, not a mover; checked again when movers are held.</summary>
     /// <summary>The literal call's held path, out of line so the call with no mover near keeps a small frame.</summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
     private ResolveResult HeldLiteral(ref Neighbourhood lands, Vector3 position, uint cellId, Vector3 delta, float stepUp) =>
@@ -31,6 +30,7 @@ public sealed partial class PhysicsEngine
         return Held<Optioned, ResolveResult>(ref lands, new Optioned(move.Position, move.CellId, move.Delta, move.StepUpHeight, in options));
     }
 
+    /// <summary>The spec's call's part (<see cref="Resolve(Vector3, uint, Vector3, float)"/>): no effects, not a mover; checked again when movers are held.</summary>
     private readonly struct Literal(Vector3 position, uint cellId, Vector3 delta, float stepUp) : IHeldBody<ResolveResult>
     {
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

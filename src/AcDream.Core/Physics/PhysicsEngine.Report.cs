@@ -36,41 +36,41 @@ public sealed partial class PhysicsEngine
 #pragma warning disable RS0027 // (the spec's four-argument Resolve has no optional parameter to clash with; one general call reads best with the span optional)
     public MoveResult Resolve(in MoveRequest request, Span<uint> touched = default)
 #pragma warning restore RS0027
-        => _recorder is null ? Query<Requested, MoveResult>(new Requested(in request, touched)) : Recorded(in request, touched);
+        => _recorder is null ? Request(in request, touched) : Recorded(in request, touched);
+
+    /// <summary>
+    /// The general move: checked, the commit number read, its neighbourhood made and the movers near met; its part
+    /// (<see cref="Requested"/>) run with them held when there are any (<see cref="Held{TBody, TResult}"/>), else here.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private MoveResult Request(in MoveRequest request, Span<uint> touched)
+    {
+        MoveQuery.Validate(in request);
+        var body = new Requested(in request, touched, _movers.CommitNumber);
+        var lands = new Neighbourhood(_registry);
+        MovementOptions options = request.Options;
+        return _movers.Any && lands.Meet(_movers, in _frame, request.Position, request.CellId, MoverReach(request.Delta, in options), request.MoverId)
+            ? Held<Requested, MoveResult>(ref lands, in body)
+            : body.Run(this, ref lands, held: false);
+    }
 
     /// <summary>The general move with a recorder set, out of line as the cast's (<see cref="Recorded(in CastRequest)"/>).</summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
     private MoveResult Recorded(in MoveRequest request, Span<uint> touched)
     {
-        MoveResult result = Query<Requested, MoveResult>(new Requested(in request, touched));
+        MoveResult result = Request(in request, touched);
         _recorder?.Resolved(in request, touched, in result);
         return result;
     }
 
     /// <summary>The general call's own part: its move, what it met when asked, and the movers it touched.</summary>
-    private ref struct Requested : IQueryBody<MoveResult>
+    private readonly ref struct Requested(ref readonly MoveRequest request, Span<uint> touched, long commit) : IHeldBody<MoveResult>
     {
-        private readonly ref readonly MoveRequest _request;
-        private readonly Span<uint> _touched;
-        private long _commit;
+        private readonly ref readonly MoveRequest _request = ref request;
+        private readonly Span<uint> _touched = touched;
+        private readonly long _commit = commit; // the commit read before the movers were met (none held: the answer read it)
 
-        public Requested(in MoveRequest request, Span<uint> touched)
-        {
-            _request = ref request;
-            _touched = touched;
-        }
-
-        public readonly void Validate() => MoveQuery.Validate(in _request);
-
-        public void Begin(PhysicsEngine engine) => _commit = engine._movers.CommitNumber;
-
-        public readonly bool Meet(ref Neighbourhood lands, MoverRegistry movers, in WorldFrame frame)
-        {
-            MovementOptions options = _request.Options;
-            return lands.Meet(movers, in frame, _request.Position, _request.CellId, MoverReach(_request.Delta, in options), _request.MoverId);
-        }
-
-        public readonly MoveResult Run(PhysicsEngine engine, ref Neighbourhood lands, bool held)
+        public MoveResult Run(PhysicsEngine engine, ref Neighbourhood lands, bool held)
         {
             ref readonly MoveRequest request = ref _request;
             if (!held)
