@@ -17,7 +17,7 @@ public class MoverRegistryHoldTests
         engine.ToWorld(MoverSmokeTests.Landblock, new Vector3(x, y, MoverSmokeTests.Ground));
 
     [Fact]
-    public void A_reader_holding_states_while_the_writer_commits_leaves_none_held_and_the_writer_allocates_nothing()
+    public void A_reader_holding_states_while_the_writer_commits_leaves_none_held_and_the_writer_adds_at_most_a_few_states()
     {
         PhysicsEngine engine = MoverSmokeTests.Field();
         MoverRegistry movers = engine.Movers;
@@ -72,7 +72,11 @@ public class MoverRegistryHoldTests
         reader.Join();
         none.Should().Be(0, "a mover is committed throughout");
 
-        bytes.Should().Be(0, $"{commits} commits while the reader held {Interlocked.Read(ref holds)} states, one at a time: three states suffice, each free again once released");
+        // Three states suffice, each free again once released; a commit may add one more only when the reader, preempted
+        // inside a hold, has every spare state counted at that instant (MoverRegistry's remarks): a few states at most,
+        // however many commits (one is about 8 KB here). A hold whose undo leaked would leave states held for good and
+        // make the writer add one at nearly every commit.
+        bytes.Should().BeLessThan(32 * 1024, $"{commits} commits while the reader held {Interlocked.Read(ref holds)} states, one at a time: at most a few spare states are ever added");
         MoverFrame now = movers.Hold()!;
         now.Readers.Should().Be(1, "held once, by this call");
         MoverRegistry.Release(now);
