@@ -75,6 +75,7 @@ public class BodySlideTests
 
     [Theory]
     [MemberData(nameof(SinkingWalls))]
+    [Trait("Mutation", "BodySweep")]
     public void Resolve_AlongAWallForThousandsOfFrames_NeverSinksIntoItAndAgreesWithTheReference(float yaw, int lb, bool global)
     {
         // As above, pushing into the wall at 63°, then walking exactly along it, at 0.1, 0.2 and 1.7 m per
@@ -190,6 +191,7 @@ public class BodySlideTests
     [InlineData(71f, 0x12, false)]
     [InlineData(17f, 0xFE, true)]
     [InlineData(71f, 0xFE, true)]
+    [Trait("Mutation", "BodySweep")]
     public void Resolve_AlongAWallOfCollinearPieces_StaysOnItsLineAsTheReference(float yaw, int lb, bool global)
     {
         // The east wall of a 40 m room is forty 1 m polygons end to end (as real cells' walls are cut at

@@ -53,6 +53,21 @@ public class BodySweepClosedFormTests
 
         // Towards it by 2e-5 of the move: stopped.
         Segment(new Vector2(5f, 0.3f), new Vector2(1f, -2e-5f)).T.Should().Be(0f);
+        // The tolerance is a fraction of the move's length: a move of 0.1 m towards it by 2e-5 of its length is stopped,
+        // by 1e-6 is free.
+        Segment(new Vector2(5f, 0.3f), new Vector2(0.1f, -2e-6f)).T.Should().Be(0f);
+        Segment(new Vector2(5f, 0.3f), new Vector2(0.1f, -1e-7f)).T.Should().Be(1f);
+    }
+
+    [Fact]
+    public void A_disc_overlapping_a_cylinder_wider_than_a_metre_keeps_the_overlap_of_their_radii()
+    {
+        // A cylinder of radius 1.5 (the segment from (0, 0) to itself, widened): the disc's centre 1.9 m from its axis,
+        // moving away, overlaps it by 0.5 + 1.5 − 1.9.
+        WallHit hit = Segment(new Vector2(0f, 1.9f), new Vector2(0f, 1f), A, A, widen: 1.5f);
+        hit.T.Should().Be(1f);
+        hit.Depth.Should().BeApproximately(0.1f, 1e-6f);
+        hit.Outward.Should().Be(Vector2.UnitY);
     }
 
     [Fact]
@@ -73,6 +88,15 @@ public class BodySweepClosedFormTests
         // On the wall's middle, moving north: its normal points south, against the move, which it stops.
         WallHit middle = Segment(new Vector2(5f, 0f), new Vector2(0f, 1f));
         (middle.T, middle.Normal, middle.Depth, middle.Outward).Should().Be((0f, -Vector2.UnitY, Radius, -Vector2.UnitY));
+
+        // On the wall's middle, moving north-east: still the wall's own normal, not the move's.
+        WallHit slanting = Segment(new Vector2(5f, 0f), new Vector2(1f, 1f));
+        (slanting.T, slanting.Normal, slanting.Outward).Should().Be((0f, -Vector2.UnitY, -Vector2.UnitY));
+
+        // On the wall's middle, moving along it: free, and its overlap out of the wall's north side (its normal's own
+        // sign when the move takes no side).
+        WallHit along = Segment(new Vector2(5f, 0f), new Vector2(1f, 0f));
+        (along.T, along.Depth, along.Outward).Should().Be((1f, Radius, Vector2.UnitY));
 
         // On the wall's end: the same, beside it although at its end.
         WallHit end = Segment(new Vector2(0f, 0f), new Vector2(0f, 1f));
@@ -233,6 +257,12 @@ public class BodySweepClosedFormTests
         var north = WallHit.None;
         BodySweep.SweepPolygon(Triangle, new Vector2(0f, 192f), Move(new Vector2(11f, 192f), new Vector2(-8f, 0f), 2f, 4f), ref north);
         north.T.Should().BeApproximately(0.3125f, 1e-5f);
+
+        // Broadside across the face's middle (x 5), which only the edges between the cut's vertices cover.
+        var across = WallHit.None;
+        BodySweep.SweepPolygon(Triangle, new Vector2(0f, 192f), Move(new Vector2(5f, 189f), new Vector2(0f, 3f), 2f, 4f), ref across);
+        across.T.Should().BeApproximately((3f - Radius) / 3f, 1e-5f);
+        across.Normal.Should().Be(-Vector2.UnitY);
     }
 
     /// <summary>

@@ -45,6 +45,38 @@ public class ObjectQueryEdgeTests
         return (hit.T, hit.Normal, hit.Wall, hit.Rises);
     }
 
+    [Theory]
+    // The box 40..44 × 40..44 against boxes touching it on each side, and a hair (a float step) beyond each side.
+    [InlineData(44f, 41f, 46f, 43f, true)] // east
+    [InlineData(44.000004f, 41f, 46f, 43f, false)]
+    [InlineData(38f, 41f, 40f, 43f, true)] // west
+    [InlineData(38f, 41f, 39.999996f, 43f, false)]
+    [InlineData(41f, 44f, 43f, 46f, true)] // north
+    [InlineData(41f, 44.000004f, 43f, 46f, false)]
+    [InlineData(41f, 38f, 43f, 40f, true)] // south
+    [InlineData(41f, 38f, 43f, 39.999996f, false)]
+    [InlineData(41f, 41f, 41f, 41f, true)] // a point inside
+    [InlineData(44f, 44f, 44f, 44f, true)] // a point on the corner
+    [InlineData(45f, 42f, 45f, 42f, false)] // a point east, level with the box
+    [InlineData(42f, 45f, 42f, 45f, false)] // a point north, beside it
+    [InlineData(30f, 30f, 50f, 50f, true)] // a box holding the whole
+    [Trait("Mutation", "WallSet")]
+    public void Boxes_seen_from_above_overlap_when_they_share_a_point_and_touching_is_sharing(float loX, float loY, float hiX, float hiY, bool overlaps)
+    {
+        Boxes.Overlaps(new Vector2(40f, 40f), new Vector2(44f, 44f), new Vector2(loX, loY), new Vector2(hiX, hiY)).Should().Be(overlaps);
+    }
+
+    [Theory]
+    [InlineData(94.5f, true)]
+    [InlineData(94f, false)] // level with the bottom
+    [InlineData(96f, false)] // level with the top
+    [InlineData(93f, false)]
+    [InlineData(97f, false)]
+    public void A_height_straddles_an_objects_band_only_strictly_between_its_bottom_and_top(float h, bool straddles)
+    {
+        ObjectQueries.Straddles(94f, 96f, h).Should().Be(straddles);
+    }
+
     public static TheoryData<string, float, float, float, float, float, float> Walls() => new()
     {
         // A wall alone (its object's bounds are the wall), a move ending exactly on it from each side along each axis:

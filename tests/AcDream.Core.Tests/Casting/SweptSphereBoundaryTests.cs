@@ -43,6 +43,23 @@ public class SweptSphereBoundaryTests
     private static D3[] Rectangle(double x0, double x1, double y0, double y1, double z) =>
         [new(x0, y0, z), new(x1, y0, z), new(x1, y1, z), new(x0, y1, z)];
 
+    [Theory]
+    [InlineData(2.0, 1.0, 3.0, 1.0, false)] // the path ends exactly on the near side
+    [InlineData(2.0, 1.0, 3.5, 1.0, true)]
+    [InlineData(2.0, 0.5, 2.0, 1.0, false)] // the limit scales the path: it ends at 1, the near side
+    [InlineData(2.0, 0.5, 2.5, 1.0, true)]
+    [InlineData(-2.0, 1.0, -3.0, 1.0, false)]
+    [InlineData(-2.0, 1.0, -3.5, 1.0, true)]
+    [InlineData(2.0, 1.0, -1.0, 1.0, false)] // behind the start, its far side exactly at the start
+    [InlineData(2.0, 1.0, -1.5, 1.0, true)]
+    [InlineData(-2.0, 1.0, 1.0, 1.0, false)]
+    [InlineData(-2.0, 1.0, 1.5, 1.0, true)]
+    [InlineData(2.0, 1.0, 1.0, 0.25, false)] // wholly within the path's stretch
+    public void One_axis_of_the_rims_box_pre_check_is_apart_only_beyond_its_bounds(double move, double limit, double centre, double half, bool apart)
+    {
+        SweptSphere.Apart(move, limit, centre, half).Should().Be(apart);
+    }
+
     [Fact]
     public void A_polygon_whose_Newell_normal_is_1e_12_long_has_no_area_and_one_twice_that_has()
     {

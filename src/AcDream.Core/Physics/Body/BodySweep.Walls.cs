@@ -17,6 +17,7 @@ internal static partial class BodySweep
     {
         Span<Vector3> low = stackalloc Vector3[2 * vertices.Length]; // a cut adds at most one vertex per edge
         int lowCount = Clip(vertices, low, move.ZLow, keepAbove: true);
+        // Stryker disable once Statement,Block : with nothing above the band's foot, the second cut and the loop see no vertex
         if (lowCount == 0)
         {
             return;
@@ -49,13 +50,15 @@ internal static partial class BodySweep
     {
         float zLow = box.ZLow, zHigh = box.ZHigh;
         Vector2 lo = box.Lo, hi = box.Hi;
-        if (walls.Min.X > hi.X || walls.Max.X < lo.X || walls.Min.Y > hi.Y || walls.Max.Y < lo.Y || walls.ZMax <= zLow || walls.ZMin >= zHigh)
+        // Stryker disable once Equality,Logical,Statement,Block : a pre-check: each wall's extent tests the box and band again
+        if (!Boxes.Overlaps(walls.Min, walls.Max, lo, hi) || walls.ZMax <= zLow || walls.ZMin >= zHigh)
         {
             return;
         }
 
         ReadOnlySpan<WallExtent> extents = walls.Extents;
         Vector128<float> query = WallExtent.Query(lo, hi);
+        // Stryker disable once Equality : with 64 walls the loop over all sweeps those the candidates would, each tested by its extent
         if (extents.Length > 64)
         {
             for (int i = 0; i < extents.Length; i++)
@@ -66,10 +69,12 @@ internal static partial class BodySweep
                 }
             }
 
+            // Stryker disable once Statement : the loop below would sweep again walls swept here: the earliest contact stays
             return;
         }
 
-        for (ulong left = candidates & (extents.Length == 64 ? ulong.MaxValue : (1UL << extents.Length) - 1); left != 0; left &= left - 1)
+        ulong left = candidates & (extents.Length == 64 ? ulong.MaxValue : (1UL << extents.Length) - 1);
+        for (int n = System.Numerics.BitOperations.PopCount(left); n > 0; n--, left &= left - 1) // (a turn per bit set: the loop ends however the bits are cleared)
         {
             int i = System.Numerics.BitOperations.TrailingZeroCount(left);
             if (extents[i].Meets(query, zLow, zHigh))

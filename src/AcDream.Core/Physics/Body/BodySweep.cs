@@ -54,7 +54,7 @@ internal static partial class BodySweep
         path.Count = 1;
         float together = MathF.Max(PhysicsConstants.ContactTolerance, 2f * sink);
         Vector2 position = p, rest = d, previous = default, unprojected = d;
-        for (int contact = 0; contact <= PhysicsConstants.MaxBodyContacts; contact++)
+        for (int contact = 0; /* Stryker disable once Equality : the last turn only stops the slide, as ending the loop does */ contact <= PhysicsConstants.MaxBodyContacts; contact++)
         {
             if (rest == Vector2.Zero)
             {
@@ -90,6 +90,7 @@ internal static partial class BodySweep
             else
             {
                 rest = Vector2.Zero; // out of contacts: stop at the last one
+                // Stryker disable once Statement : going on adds the last corner again (a leg of no length) and stops
                 break;
             }
 
@@ -101,7 +102,7 @@ internal static partial class BodySweep
             }
 
             float travelled = t * rest.Length();
-            if (t > 0f)
+            if (/* Stryker disable once Equality : at 0 it adds the corner it is at again (a leg of no length) */ t > 0f)
             {
                 position += rest * t;
                 points[path.Count++] = position;
@@ -200,7 +201,7 @@ internal static partial class BodySweep
             return;
         }
 
-        if (lengthSquared > 0f)
+        if (/* Stryker disable once Equality : a segment of no length has a NaN side, which approaches nothing */ lengthSquared > 0f)
         {
             Vector2 side = Vector2.Normalize(new Vector2(-ab.Y, ab.X));
             float s0 = Vector2.Dot(p - a, side);
@@ -272,6 +273,7 @@ internal static partial class BodySweep
 
         float cc = mm - (circle * circle);
         float discriminant = (b * b) - (a * cc);
+        // Stryker disable once Statement,Block : the root of a negative discriminant is NaN, which is not kept
         if (discriminant < 0f)
         {
             return;

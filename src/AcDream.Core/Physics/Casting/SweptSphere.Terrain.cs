@@ -31,7 +31,7 @@ internal partial struct SweptSphere
         double gapIn = k0 + (k1 * tIn) + (k2 * tIn * tIn), slopeIn = k1 + (2 * k2 * tIn);
         if (gapIn < 0 || (gapIn == 0 && slopeIn < 0))
         {
-            if (slopeIn < 0 && tIn < T && tIn <= 1.0)
+            if (slopeIn < 0 && MayKeep(tIn))
             {
                 Keep(tIn, PatchNormal(u0 + (du * tIn), v0 + (dv * tIn), b, c, d, size), new ShapeName(SurfaceKind.Terrain, id));
             }
@@ -65,7 +65,7 @@ internal partial struct SweptSphere
             }
         }
 
-        if (best < tIn || best > tOut || !(best < T) || best > 1.0)
+        if (best < tIn || best > tOut || !MayKeep(best))
         {
             return;
         }

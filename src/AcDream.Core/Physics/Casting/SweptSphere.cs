@@ -65,6 +65,12 @@ internal partial struct SweptSphere
     /// <summary>Ends the cast at <paramref name="t"/> when nothing was met before it (a portal to a cell not loaded, land not loaded), naming <paramref name="name"/>.</summary>
     public void Stop(double t, D3 normal, ShapeName name) => Keep(t, normal, name);
 
+    /// <summary>
+    /// Whether a contact at <paramref name="t"/> could be kept: before the one kept and not past the end. A pre-check
+    /// that spares working out a normal <see cref="Keep"/> would refuse; <see cref="Keep"/> tests it again with the stretch.
+    /// </summary>
+    private readonly bool MayKeep(double t) => /* Stryker disable once Logical : a pre-check that Keep repeats */ t < T && t <= 1.0;
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void Keep(double t, D3 normal, ShapeName name)
     {
@@ -94,22 +100,23 @@ internal partial struct SweptSphere
         var c = new D3(cx / v.Length, cy / v.Length, cz / v.Length);
         double s0 = -D3.Dot(n, c); // the start's signed distance from the plane
         double rate = D3.Dot(n, Move);
-        if (Radius > 0 && Math.Abs(s0) < Radius && Overlapping(v, n, s0, rate, named))
+        if (Math.Abs(s0) < Radius && Overlapping(v, n, s0, rate, named))
         {
             return; // the sphere starts within its radius of the polygon: met at once, or free of it
         }
 
         double side = s0 > 0 || (s0 == 0 && rate > 0) ? 1.0 : -1.0; // a start on the plane is on the side it moves to: away
-        if (side * rate < 0)
+        if (/* Stryker disable once Arithmetic : side is ±1, so side / rate has the sign of side · rate (rate 0: ±∞ or NaN, whose t is never kept) */ side * rate < 0)
         {
             // Approaching the plane: the face is met when the centre is a radius from it.
             double t = Math.Max((Math.Abs(s0) - Radius) / (-side * rate), 0.0); // (0 only when the start's foot is off the polygon)
-            if (t < T && t <= 1.0)
+            if (MayKeep(t))
             {
                 D3 touch = (Move * t) - (n * (side * Radius)); // (only its place in the plane matters to the inside test)
                 if (Inside(v, n, touch))
                 {
                     Keep(t, n * side, named);
+                    // Stryker disable once Statement : its edges and corners come no earlier, and a tie is not kept
                     return; // the face is the first of this polygon met
                 }
             }
@@ -141,7 +148,7 @@ internal partial struct SweptSphere
             for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
             {
                 D3 e = v[i] - v[j];
-                double ee = D3.Dot(e, e), s = ee > 0 ? Math.Clamp(D3.Dot(-v[j], e) / ee, 0.0, 1.0) : 0.0;
+                double s = Math.Clamp(D3.Dot(-v[j], e) / Math.Max(D3.Dot(e, e), double.Epsilon), 0.0, 1.0); // (an edge of no length: 0)
                 D3 q = v[j] + (e * s);
                 double d = D3.Dot(q, q);
                 if (d < best)
@@ -186,12 +193,7 @@ internal partial struct SweptSphere
     private void Edge(D3 a, D3 b, ShapeName name)
     {
         D3 e = b - a, m = -a;
-        double ee = D3.Dot(e, e), ed = D3.Dot(e, Move), em = D3.Dot(e, m);
-        if (!(ee > 0))
-        {
-            return;
-        }
-
+        double ee = D3.Dot(e, e), ed = D3.Dot(e, Move), em = D3.Dot(e, m); // (an edge of no length has A 0: it returns below)
         double A = (ee * MoveSquared) - (ed * ed);
         double B = (ee * D3.Dot(m, Move)) - (ed * em);
         double C = (ee * (D3.Dot(m, m) - (Radius * Radius))) - (em * em);
@@ -205,12 +207,14 @@ internal partial struct SweptSphere
         double disc = (B * B) - (A * C);
         if (disc < 0)
         {
+            // Stryker disable once Statement : the root of a negative discriminant is NaN, which is not kept
             return;
         }
 
         double t = (-B - Math.Sqrt(disc)) / A;
-        if (!(t < T) || t > 1.0)
+        if (!MayKeep(t))
         {
+            // Stryker disable once Statement : Keep tests the same bounds again
             return;
         }
 
@@ -237,11 +241,12 @@ internal partial struct SweptSphere
         double disc = (b * b) - (MoveSquared * c);
         if (disc < 0)
         {
+            // Stryker disable once Statement : the root of a negative discriminant is NaN, which is not kept
             return;
         }
 
         double t = (-b - Math.Sqrt(disc)) / MoveSquared;
-        if (t < T && t <= 1.0)
+        if (MayKeep(t))
         {
             Keep(t, Towards((Move * t) - p), name);
         }

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Surfaces;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Point;
@@ -66,6 +67,7 @@ internal static class ObjectQueries
     /// </summary>
     public static void AmongOutdoors(LandblockEntry entry, in StepLine line, ObjectPass pass, ref ObjectHit hit)
     {
+        // Stryker disable once Statement,Block : with no objects the grid lists none
         if (entry.OutdoorObjects.Length == 0)
         {
             return;
@@ -79,12 +81,12 @@ internal static class ObjectQueries
         {
             int i = near.Current;
             ref readonly ObjectBox b = ref entry.ObjectBoxes[i];
-            if (walls && b.ZMin < h && b.ZMax > h && Obstructs(objects[i], in b, in line, ref hit))
+            if (walls && Straddles(b.ZMin, b.ZMax, h) && Obstructs(objects[i], in b, in line, ref hit))
             {
                 hit.Wall = objects[i];
             }
 
-            if (floors && p1.X >= b.FloorMin.X && p1.Y >= b.FloorMin.Y && p1.X <= b.FloorMax.X && p1.Y <= b.FloorMax.Y)
+            if (floors && Boxes.Overlaps(b.FloorMin, b.FloorMax, p1, p1))
             {
                 hit.FloorAbove |= b.ZMax > h;
                 if (objects[i].TryFloorBelow(p1.X, p1.Y, h, out float z) && z > hit.GroundZ)
@@ -119,13 +121,14 @@ internal static class ObjectQueries
     /// </summary>
     public static void RaiseToRest(ref Neighbourhood lands, LandblockEntry entry, Vector2 p, float feetZ, float stepUp, ref ObjectHit hit)
     {
-        float ceiling = feetZ + stepUp;
-        while (hit.FloorAbove && hit.GroundZ > feetZ && hit.GroundZ + stepUp > ceiling)
+        float ceiling = /* Stryker disable once Arithmetic : a ground above the feet is above the feet less a step too, and its pass looks up to the same ceiling */ feetZ + stepUp;
+        while (/* Stryker disable once Logical : a looser condition runs one more pass, which finds no higher floor and returns */ hit.FloorAbove && hit.GroundZ > feetZ && hit.GroundZ + stepUp > ceiling)
         {
             ceiling = hit.GroundZ + stepUp;
             float ground = hit.GroundZ;
-            hit.FloorAbove = false;
+            hit.FloorAbove = /* Stryker disable once Boolean : one more pass, which finds no higher floor and returns */ false;
             AmongOutdoors(ref lands, entry, new StepLine(p, p, ceiling), ObjectPass.Floors, ref hit);
+            // Stryker disable once Statement,Block : the loop's condition then fails: the ground plus the step is the ceiling
             if (hit.GroundZ == ground)
             {
                 return;
@@ -141,17 +144,16 @@ internal static class ObjectQueries
     private static bool Crosses(ObjectSurface o, in StepLine line, ref ObjectHit hit)
     {
         float h = line.H;
-        if (!(o.BoundsMin.Z < h && o.BoundsMax.Z > h))
+        if (!Straddles(o.BoundsMin.Z, o.BoundsMax.Z, h))
         {
             return false;
         }
 
-        Vector2 lo = line.Lo, hi = line.Hi, wallMin = o.Walls.Min, wallMax = o.Walls.Max;
-        bool met = wallMin.X <= hi.X && wallMax.X >= lo.X && wallMin.Y <= hi.Y && wallMax.Y >= lo.Y && line.FirstCrossing(o.Walls, ref hit);
+        bool met = Boxes.Overlaps(o.Walls.Min, o.Walls.Max, line.Lo, line.Hi) && line.FirstCrossing(o.Walls, ref hit);
         hit.Rises &= !met;
         if (o.RisesThrough(in line, ref hit.T, ref hit.Normal))
         {
-            (met, hit.Rises, hit.Cylinder) = (true, true, false);
+            (met, hit.Rises, hit.Cylinder) = (true, true, /* Stryker disable once Boolean : read only when the hit is not a rise; a wall met later sets it again */ false);
         }
 
         return met;
@@ -166,17 +168,19 @@ internal static class ObjectQueries
     private static bool Obstructs(ObjectSurface o, in ObjectBox b, in StepLine line, ref ObjectHit hit)
     {
         Vector2 lo = line.Lo, hi = line.Hi;
-        bool met = b.WallMin.X <= hi.X && b.WallMax.X >= lo.X && b.WallMin.Y <= hi.Y && b.WallMax.Y >= lo.Y
-            && line.FirstCrossing(o.Walls, ref hit);
+        bool met = Boxes.Overlaps(b.WallMin, b.WallMax, lo, hi) && line.FirstCrossing(o.Walls, ref hit);
         hit.Rises &= !met;
-        if (b.FloorMin.X <= hi.X && b.FloorMax.X >= lo.X && b.FloorMin.Y <= hi.Y && b.FloorMax.Y >= lo.Y
-            && o.RisesThrough(in line, ref hit.T, ref hit.Normal))
+        if (Boxes.Overlaps(b.FloorMin, b.FloorMax, lo, hi) && o.RisesThrough(in line, ref hit.T, ref hit.Normal))
         {
-            (met, hit.Rises, hit.Cylinder) = (true, true, false);
+            (met, hit.Rises, hit.Cylinder) = (true, true, /* Stryker disable once Boolean : read only when the hit is not a rise; a wall met later sets it again */ false);
         }
 
         return met;
     }
+
+    /// <summary>Whether height <paramref name="h"/> lies strictly between <paramref name="zMin"/> and <paramref name="zMax"/> (metres): a line level with an object's bottom or top passes it.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static bool Straddles(float zMin, float zMax, float h) => zMin < h && zMax > h;
 }
 
 /// <summary>What an outdoor pass among objects looks for (<see cref="ObjectQueries.AmongOutdoors(LandblockEntry, in StepLine, ObjectPass, ref ObjectHit)"/>).</summary>

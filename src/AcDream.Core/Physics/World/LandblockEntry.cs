@@ -193,7 +193,7 @@ internal sealed class LandblockEntry
 
     /// <summary>Whether the box <paramref name="lo"/>–<paramref name="hi"/> (this landblock's frame) meets <see cref="OutdoorMin"/>–<see cref="OutdoorMax"/>.</summary>
     public bool OutdoorsOverlaps(Vector2 lo, Vector2 hi) =>
-        OutdoorMin.X <= hi.X && OutdoorMax.X >= lo.X && OutdoorMin.Y <= hi.Y && OutdoorMax.Y >= lo.Y;
+        Boxes.Overlaps(OutdoorMin, OutdoorMax, lo, hi);
 
     public bool TryGetCellIndex(uint cellId, out int index) => _indexById.TryGetValue(cellId, out index);
 
