@@ -106,11 +106,14 @@ internal partial struct SweptSphere
         double w0 = -z, rho0 = Math.Sqrt(a0);
         if ((((rho0 - radius) * (rho0 - radius)) + (w0 * w0)) <= Radius * Radius)
         {
-            double f0 = radius / Math.Max(rho0, double.Epsilon); // (ρ 0: the axis is at the start, and the factor multiplies 0)
-            var away0 = new D3(-axisX + (axisX * f0), -axisY + (axisY * f0), w0);
-            if (/* Stryker disable once Arithmetic : up is ±1 */ w0 * up > 0 && rho0 > radius && D3.Dot(away0, Move) < 0)
+            if (/* Stryker disable once Arithmetic : up is ±1 */ w0 * up > 0 && rho0 > radius)
             {
-                Keep(0, Towards(away0), name);
+                double f0 = radius / rho0; // (ρ above the circle's radius: not 0)
+                var away0 = new D3(-axisX + (axisX * f0), -axisY + (axisY * f0), w0);
+                if (D3.Dot(away0, Move) < 0)
+                {
+                    Keep(0, Towards(away0), name);
+                }
             }
 
             return;
@@ -128,11 +131,10 @@ internal partial struct SweptSphere
 
             D3 centre = Move * t;
             double hx = centre.X - axisX, hy = centre.Y - axisY, rho = Math.Sqrt((hx * hx) + (hy * hy));
-            double f = radius / Math.Max(rho, double.Epsilon); // (ρ 0: hx and hy are 0, which the factor multiplies)
-            var away = new D3(hx - (hx * f), hy - (hy * f), centre.Z - z);
             if ((centre.Z - z) * up > 0 && rho > radius)
             {
-                Keep(t, Towards(away), name);
+                double f = radius / rho; // (ρ above the circle's radius: not 0)
+                Keep(t, Towards(new D3(hx - (hx * f), hy - (hy * f), centre.Z - z)), name);
             }
 
             return; // the first crossing of the torus: beyond it the side or a cap answers
